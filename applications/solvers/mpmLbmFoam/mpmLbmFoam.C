@@ -1,0 +1,70 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+Application
+    mpmLbmFoam
+
+Group
+    grpSolvers
+
+Description
+    Soil-water interaction: the soil skeleton by the material point method,
+    the water by the lattice Boltzmann method, on one uniform hex mesh whose
+    cell centres are both the MPM grid nodes and the lattice nodes.
+
+    The scene's effects (water, soil, couplings) are selected in
+    constant/physicsProperties; see physicsScene.
+
+Usage
+    \b mpmLbmFoam [OPTION]
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "physicsScene.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Soil-water interaction: material point soil, lattice Boltzmann"
+        " water, on one uniform mesh"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    physicsScene scene(mesh);
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        scene.evolve();
+        scene.write();
+
+        runTime.write();
+    }
+
+    scene.summary();
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

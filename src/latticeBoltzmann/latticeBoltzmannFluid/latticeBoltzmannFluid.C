@@ -1,0 +1,565 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "latticeBoltzmannFluid.H"
+#include "lbmKernel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(latticeBoltzmannFluid, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// A positive physical property from the dictionary, or a FatalIOError
+Foam::scalar positiveEntry(const Foam::dictionary& dict, const Foam::word& key)
+{
+    const Foam::scalar value = dict.get<Foam::scalar>(key);
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << " = " << value << " is not allowed:"
+            << " it must be a positive number (SI units)"
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return value;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::latticeBoltzmannFluid::checkVelocitySet() const
+{
+    const label D = velocitySet_->D();
+    if (D != lattice_.nDim())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "velocitySet " << velocitySet_->type() << " is " << D
+            << "D but the mesh is " << lattice_.nDim() << "D." << nl
+            << "    Allowed: "
+            << (lattice_.twoD() ? "D2Q9 (the mesh is one cell thick in z"
+                " with empty patches)" : "D3Q19 or D3Q27")
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::latticeBoltzmannFluid::checkUnits() const
+{
+    const scalar tauMinusHalf = units_.tau() - 0.5;
+    if (!(tauMinusHalf > 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The relaxation time tau = " << units_.tau()
+            << " is not above 1/2 (lattice viscosity "
+            << units_.nuLattice() << "): the lattice Boltzmann method needs"
+            << " a positive viscosity." << exit(FatalIOError);
+    }
+    if (tauMinusHalf < collision_->marginalTauMinusHalf())
+    {
+        WarningInFunction
+            << "tau - 1/2 = " << tauMinusHalf << " is below "
+            << collision_->marginalTauMinusHalf() << ", where collision model "
+            << collision_->type() << " is known to lose stability unless the"
+            << " flow is well resolved." << nl
+            << "    To stay stable: use collisionModel regularized or MRT,"
+            << " a smaller dx, a larger deltaT (if the Mach number allows),"
+            << " or smagorinskyConstant 0.1." << endl;
+    }
+}
+
+
+void Foam::latticeBoltzmannFluid::initialise()
+{
+    const Time& runTime = mesh_.time();
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const labelList& cellNode = lattice_.cellNode();
+
+    fA_.setSize(Q*nBox, 0.0);
+    fB_.setSize(Q*nBox, 0.0);
+    AisCurrent_ = true;
+
+    auto popIO = [&](const label q, IOobject::readOption r)
+    {
+        return IOobject
+        (
+            "lbmF" + Foam::name(q),
+            runTime.timeName(),
+            mesh_,
+            r,
+            IOobject::NO_WRITE,
+            false
+        );
+    };
+
+    const bool hasFirst =
+        popIO(0, IOobject::MUST_READ).typeHeaderOk<volScalarField>(true);
+
+    if (hasFirst)
+    {
+        if
+        (
+            !popIO(Q - 1, IOobject::MUST_READ)
+                .typeHeaderOk<volScalarField>(true)
+         || popIO(Q, IOobject::MUST_READ).typeHeaderOk<volScalarField>(true)
+        )
+        {
+            FatalIOErrorInFunction(dict_)
+                << "The populations in " << runTime.timePath() << " were not"
+                << " written with velocitySet " << velocitySet_->type()
+                << " (" << Q << " files lbmF0..lbmF" << Q - 1 << " expected)."
+                << nl << "    Restart with the velocity set of that run, or"
+                << " remove the lbmF* files to start from U and p at"
+                << " equilibrium." << exit(FatalIOError);
+        }
+
+        Info<< "Reading populations lbmF0..lbmF" << Q - 1 << " from time "
+            << runTime.timeName() << nl << endl;
+        scalarList& f = current();
+        for (label q = 0; q < Q; ++q)
+        {
+            const volScalarField fq(popIO(q, IOobject::MUST_READ), mesh_);
+            forAll(cellNode, celli)
+            {
+                f[q*nBox + cellNode[celli]] = fq[celli];
+            }
+        }
+    }
+    else
+    {
+        Info<< "Initialising populations at equilibrium from U and p"
+            << nl << endl;
+        scalarList& f = current();
+        const List<labelVector>& c = velocitySet_->c();
+        const scalarList& w = velocitySet_->w();
+        forAll(cellNode, celli)
+        {
+            const scalar rho = units_.rhoLattice(p_[celli]);
+            const vector u = units_.toLattice(U_[celli]);
+            for (label q = 0; q < Q; ++q)
+            {
+                const scalar cu = vector(c[q]) & u;
+                f[q*nBox + cellNode[celli]] =
+                    w[q]*rho*(1 + 3*cu + 4.5*cu*cu - 1.5*magSqr(u));
+            }
+        }
+    }
+
+    // Initial mass
+    const scalarList& f = current();
+    scalar mass = 0;
+    for (const label n : cellNode)
+    {
+        for (label q = 0; q < Q; ++q)
+        {
+            mass += f[q*nBox + n];
+        }
+    }
+    mass0_ = returnReduce(mass, sumOp<scalar>());
+}
+
+
+void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const labelList& cellNode = lattice_.cellNode();
+    const scalar maxU2 = sqr(machLimit_)*lattice::cs2;
+
+    forAll(cellNode, celli)
+    {
+        const label n = cellNode[celli];
+        scalar rho = 0;
+        vector j(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            rho += f[q*nBox + n];
+            j += f[q*nBox + n]*vector(c[q]);
+        }
+        const vector u = j/rho;
+        const bool bad =
+            !std::isfinite(rho) || !std::isfinite(magSqr(u))
+         || !(rho > 0) || magSqr(u) > maxU2;
+        if (!bad)
+        {
+            continue;
+        }
+
+        FatalErrorInFunction
+            << "The lattice Boltzmann water became unstable at time "
+            << mesh_.time().timeName() << " s (step " << nSteps_ << ")"
+            << nl << "    cell " << celli << " at "
+            << mesh_.cellCentres()[celli]
+            << (Pstream::parRun()
+                ? " on processor " + Foam::name(Pstream::myProcNo())
+                : std::string())
+            << nl << "    lattice density " << rho << ", lattice velocity "
+            << u << ", Mach " << mag(u)/std::sqrt(lattice::cs2)
+            << " (limit machLimit " << machLimit_ << ")" << nl
+            << "    tau = " << units_.tau() << ", collision model "
+            << collision_->type() << nl
+            << "    Nothing of this step was written. To stay stable:" << nl
+            << "    - reduce deltaT in system/controlDict (lattice Mach ="
+            << " U deltaT/dx sqrt(3))," << nl
+            << "    - or refine the mesh, or raise nu in"
+            << " constant/fluidProperties," << nl
+            << "    - or use collisionModel regularized or MRT, or"
+            << " smagorinskyConstant 0.1." << nl
+            << exit(FatalError);
+    }
+
+    FatalErrorInFunction
+        << "The lattice Boltzmann water became unstable at time "
+        << mesh_.time().timeName() << " s: total mass is not finite"
+        << exit(FatalError);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
+:
+    lattice_(lattice),
+    mesh_(lattice.mesh()),
+    dict_
+    (
+        IOobject
+        (
+            "fluidProperties",
+            mesh_.time().constant(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    velocitySet_(velocitySet::New(dict_.get<word>("velocitySet"), dict_)),
+    units_
+    (
+        lattice.dx(),
+        mesh_.time().deltaTValue(),
+        positiveEntry(dict_, "nu"),
+        positiveEntry(dict_, "rho")
+    ),
+    collision_(collisionModel::New(dict_, velocitySet_())),
+    bodyAcceleration_
+    (
+        dict_.getOrDefault<vector>("bodyAcceleration", Zero)
+    ),
+    machLimit_(dict_.getOrDefault<scalar>("machLimit", 0.5)),
+    smagorinsky_(dict_.getOrDefault<scalar>("smagorinskyConstant", 0)),
+    U_
+    (
+        IOobject
+        (
+            "U",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh_
+    ),
+    p_
+    (
+        IOobject
+        (
+            "p",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh_
+    ),
+    rho_
+    (
+        IOobject
+        (
+            "rho",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh_,
+        dimensionedScalar("rho", dimDensity, units_.rho0())
+    ),
+    AisCurrent_(true),
+    mass0_(0),
+    nSteps_(0)
+{
+    checkVelocitySet();
+
+    if (!(machLimit_ > 0 && machLimit_ <= 1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "machLimit " << machLimit_ << " is not allowed: it must lie"
+            << " in (0, 1]; the lattice Boltzmann method is accurate for"
+            << " Mach numbers well below 0.3" << exit(FatalIOError);
+    }
+    if (smagorinsky_ < 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "smagorinskyConstant " << smagorinsky_ << " is not allowed:"
+            << " it must be >= 0 (0: no sub-grid model; 0.1 to 0.17 usual)"
+            << exit(FatalIOError);
+    }
+
+    if (p_.dimensions() != dimPressure)
+    {
+        FatalErrorInFunction
+            << "Field p in " << p_.objectPath() << " has dimensions "
+            << p_.dimensions() << "; the lattice Boltzmann water expects the"
+            << " pressure in Pa, dimensions [1 -1 -2 0 0 0 0]"
+            << exit(FatalError);
+    }
+
+    // Offsets of the lattice vectors
+    const label Q = velocitySet_->Q();
+    offset_.setSize(Q);
+    for (label q = 0; q < Q; ++q)
+    {
+        const labelVector& c = velocitySet_->c()[q];
+        offset_[q] = lattice_.offset(c.x(), c.y(), c.z());
+    }
+
+    // Reference speed for the Mach check: given, or the largest initial or
+    // wall speed
+    scalar Umax = max(mag(U_.primitiveField()));
+    forAll(U_.boundaryField(), patchi)
+    {
+        Umax = max(Umax, max(mag(U_.boundaryField()[patchi])));
+    }
+    reduce(Umax, maxOp<scalar>());
+    const scalar Uref = dict_.getOrDefault<scalar>("Uref", Umax);
+
+    Info<< "Lattice Boltzmann water" << nl
+        << "    velocity set " << velocitySet_->type() << nl;
+    collision_->report(Info);
+    if (smagorinsky_ > 0)
+    {
+        Info<< "    Smagorinsky sub-grid model, constant " << smagorinsky_
+            << nl;
+    }
+    Info<< "    body acceleration " << bodyAcceleration_ << " m/s2" << nl
+        << endl;
+    units_.report(Info, Uref);
+    checkUnits();
+
+    const scalar Ma = units_.Mach(Uref);
+    if (Ma >= machLimit_)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The lattice Mach number " << Ma << " of the reference speed "
+            << Uref << " m/s is at or above machLimit " << machLimit_ << nl
+            << "    Reduce deltaT in system/controlDict below "
+            << 0.3*lattice_.dx()/(Uref*std::sqrt(3.0)) << " s (Mach 0.3)"
+            << exit(FatalIOError);
+    }
+    if (Ma > 0.2)
+    {
+        WarningInFunction
+            << "The lattice Mach number " << Ma << " of the reference speed "
+            << Uref << " m/s is above 0.2: compressibility errors of order"
+            << " Ma^2 = " << sqr(Ma) << " and a risk of instability." << nl
+            << "    Reduce deltaT in system/controlDict below "
+            << 0.1*lattice_.dx()/(Uref*std::sqrt(3.0)) << " s (Mach 0.1)"
+            << endl;
+    }
+
+    boundaries_.reset
+    (
+        new lbmBoundaries(lattice_, velocitySet_(), units_, U_, p_)
+    );
+    boundaries_->report(Info);
+
+    initialise();
+    updateFields();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::latticeBoltzmannFluid::enableForceField()
+{
+    if (Fx_.empty())
+    {
+        const label nBox = lattice_.nBox();
+        Fx_.setSize(nBox, 0.0);
+        Fy_.setSize(nBox, 0.0);
+        Fz_.setSize(nBox, 0.0);
+    }
+}
+
+
+void Foam::latticeBoltzmannFluid::step()
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+
+    scalarList& f = current();
+    lattice_.halo().exchange(f.data(), Q, nBox);
+    boundaries_->fill(f.data());
+
+    lbmKernelArgs a;
+    a.fOld = f.cdata();
+    a.fNew = next().data();
+    a.nBox = nBox;
+    a.offset = offset_.cdata();
+    a.runs = reinterpret_cast<const label (*)[2]>(lattice_.runs().cdata());
+    a.nRuns = lattice_.runs().size();
+    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+    a.g[0] = g.x();
+    a.g[1] = g.y();
+    a.g[2] = g.z();
+    if (Fx_.size())
+    {
+        a.Fx = Fx_.cdata();
+        a.Fy = Fy_.cdata();
+        a.Fz = Fz_.cdata();
+    }
+    a.omega = 1.0/units_.tau();
+    a.smagorinsky = smagorinsky_;
+
+    stats_ = lbmKernelStats();
+    collision_->streamCollide(a, stats_);
+    ++nSteps_;
+
+    const scalar maxU2 = sqr(machLimit_)*lattice::cs2;
+    if
+    (
+        !std::isfinite(stats_.mass)
+     || !(stats_.rhoMin > 0)
+     || !(stats_.u2Max <= maxU2)
+    )
+    {
+        instability(next());
+    }
+
+    AisCurrent_ = !AisCurrent_;
+}
+
+
+Foam::scalar Foam::latticeBoltzmannFluid::massDefect() const
+{
+    return returnReduce(stats_.mass, sumOp<scalar>())/mass0_ - 1.0;
+}
+
+
+Foam::scalar Foam::latticeBoltzmannFluid::memoryBytes() const
+{
+    return returnReduce
+    (
+        scalar(sizeof(scalar))*(fA_.size() + fB_.size() + 3*Fx_.size()),
+        sumOp<scalar>()
+    );
+}
+
+
+Foam::label Foam::latticeBoltzmannFluid::nNodes() const
+{
+    return returnReduce(lattice_.nOwned(), sumOp<label>());
+}
+
+
+void Foam::latticeBoltzmannFluid::updateFields()
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const labelList& cellNode = lattice_.cellNode();
+    const scalarList& f = current();
+    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+
+    vectorField& U = U_.primitiveFieldRef();
+    scalarField& p = p_.primitiveFieldRef();
+    scalarField& rhoPhys = rho_.primitiveFieldRef();
+
+    forAll(cellNode, celli)
+    {
+        const label n = cellNode[celli];
+        scalar rho = 0;
+        vector j(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            const scalar fq = f[q*nBox + n];
+            rho += fq;
+            j += fq*vector(c[q]);
+        }
+        // Post-collision momentum is rho u + F/2
+        vector F = rho*g;
+        if (Fx_.size())
+        {
+            F += vector(Fx_[n], Fy_[n], Fz_[n]);
+        }
+        U[celli] = units_.toPhysical((j - 0.5*F)/rho);
+        p[celli] = units_.pressure(rho);
+        rhoPhys[celli] = rho*units_.rho0();
+    }
+
+    U_.correctBoundaryConditions();
+    p_.correctBoundaryConditions();
+    rho_.correctBoundaryConditions();
+}
+
+
+void Foam::latticeBoltzmannFluid::writePopulations() const
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const labelList& cellNode = lattice_.cellNode();
+    const scalarList& f = current();
+
+    for (label q = 0; q < Q; ++q)
+    {
+        volScalarField fq
+        (
+            IOobject
+            (
+                "lbmF" + Foam::name(q),
+                mesh_.time().timeName(),
+                mesh_,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh_,
+            dimensionedScalar(dimless, Zero)
+        );
+        scalarField& fi = fq.primitiveFieldRef();
+        forAll(cellNode, celli)
+        {
+            fi[celli] = f[q*nBox + cellNode[celli]];
+        }
+        fq.writeObject
+        (
+            IOstream::BINARY,
+            IOstream::currentVersion,
+            mesh_.time().writeCompression(),
+            true
+        );
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,422 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "lbmBoundaries.H"
+#include "IFstream.H"
+#include "DynamicList.H"
+#include "emptyPolyPatch.H"
+#include "wordRes.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::lbmBoundaries::patchKind>
+Foam::lbmBoundaries::patchKindNames
+({
+    { patchKind::NONE, "none" },
+    { patchKind::WALL, "bounceBack" },
+    { patchKind::MOVINGWALL, "movingWall" },
+    { patchKind::SLIP, "specular" },
+    { patchKind::PRESSURE, "antiBounceBack" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::lbmBoundaries::classifyPatches
+(
+    const volVectorField& U,
+    const volScalarField& p
+)
+{
+    const fvMesh& mesh = lattice_.mesh();
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+
+    // The field files as dictionaries: for messages naming file and line
+    autoPtr<dictionary> Udict, pdict;
+    auto fieldDict = [](const volScalarField::Mesh&, const regIOobject& fld)
+    {
+        IFstream is(fld.objectPath());
+        return autoPtr<dictionary>::New(is);
+    };
+
+    const wordList wallTypes({"noSlip"});
+    const wordList movingTypes({"fixedValue", "movingWallVelocity"});
+    const wordList slipTypes({"slip"});
+    const wordList openUTypes
+        ({"zeroGradient", "inletOutlet", "pressureInletOutletVelocity"});
+    const wordList closedPTypes({"zeroGradient", "fixedFluxPressure"});
+    const wordList openPTypes({"fixedValue"});
+
+    patchKinds_.setSize(patches.size(), NONE);
+
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        if (pp.coupled() || isA<emptyPolyPatch>(pp))
+        {
+            continue;
+        }
+
+        const word Utype = U.boundaryField()[patchi].type();
+        const word ptype = p.boundaryField()[patchi].type();
+
+        auto bad = [&](const regIOobject& fld, const word& type,
+                       const wordList& allowed, const string& why)
+        {
+            autoPtr<dictionary> d = fieldDict(mesh, fld);
+            const dictionary& patchDict =
+                d->subDict("boundaryField").subDict(pp.name());
+            FatalIOErrorInFunction(patchDict)
+                << "Patch " << pp.name() << ": type " << type
+                << " is not supported by the lattice Boltzmann water "
+                << why << nl
+                << "    Allowed types here: " << allowed << nl
+                << "    Supported pairs (U / p): noSlip / zeroGradient,"
+                << " fixedValue or movingWallVelocity / zeroGradient,"
+                << " slip / zeroGradient, zeroGradient / fixedValue,"
+                << " cyclic / cyclic, empty / empty"
+                << exit(FatalIOError);
+        };
+
+        if (openPTypes.found(ptype))
+        {
+            if (!openUTypes.found(Utype))
+            {
+                bad(U, Utype, openUTypes, "on a fixed-pressure patch");
+            }
+            patchKinds_[patchi] = PRESSURE;
+            continue;
+        }
+
+        if (!closedPTypes.found(ptype))
+        {
+            wordList allowed(closedPTypes);
+            allowed.append(openPTypes);
+            bad(p, ptype, allowed, "for the pressure");
+        }
+
+        if (wallTypes.found(Utype))
+        {
+            patchKinds_[patchi] = WALL;
+        }
+        else if (movingTypes.found(Utype))
+        {
+            const bool moving =
+                returnReduce
+                (
+                    max(mag(U.boundaryField()[patchi])) > 0,
+                    orOp<bool>()
+                );
+            patchKinds_[patchi] = moving ? MOVINGWALL : WALL;
+        }
+        else if (slipTypes.found(Utype))
+        {
+            patchKinds_[patchi] = SLIP;
+        }
+        else
+        {
+            wordList allowed(wallTypes);
+            allowed.append(movingTypes);
+            allowed.append(slipTypes);
+            bad
+            (
+                U, Utype, allowed,
+                "on a wall (p " + ptype + "); an open boundary needs p"
+                " fixedValue"
+            );
+        }
+    }
+}
+
+
+Foam::Pair<Foam::label> Foam::lbmBoundaries::wallFace
+(
+    const label x,
+    const label q
+) const
+{
+    const List<unsigned char>& kind = lattice_.kind();
+    const labelList& nodeCell = lattice_.nodeCell();
+    const List<FixedList<label, 6>>& cellFace = lattice_.cellBoundaryFace();
+    const labelVector& stride = lattice_.stride();
+    const labelVector& c = vs_.c()[q];
+
+    // The link leaves x along -c: a face of x on a wall side
+    const label cellx = nodeCell[x];
+    for (direction a = 0; a < 3; ++a)
+    {
+        if (c[a] == 0)
+        {
+            continue;
+        }
+        const label y = x - c[a]*stride[a];
+        if (kind[y] == latticeMesh::WALL)
+        {
+            const label dir = 2*a + (-c[a] > 0 ? 1 : 0);
+            const label facei = cellFace[cellx][dir];
+            if (facei >= 0)
+            {
+                return Pair<label>(facei, a);
+            }
+        }
+    }
+
+    // Concave corner: the axis neighbours are fluid, the diagonal is not
+    for (direction a = 0; a < 3; ++a)
+    {
+        if (c[a] == 0)
+        {
+            continue;
+        }
+        const label y = x - c[a]*stride[a];
+        if (kind[y] != latticeMesh::OWNED)
+        {
+            continue;
+        }
+        for (direction b = 0; b < 3; ++b)
+        {
+            if (b == a || c[b] == 0)
+            {
+                continue;
+            }
+            const label dir = 2*b + (-c[b] > 0 ? 1 : 0);
+            const label facei = cellFace[nodeCell[y]][dir];
+            if (facei >= 0)
+            {
+                return Pair<label>(facei, b);
+            }
+        }
+    }
+
+    return Pair<label>(-1, -1);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::lbmBoundaries::lbmBoundaries
+(
+    const latticeMesh& lattice,
+    const velocitySet& vs,
+    const lbmUnits& units,
+    const volVectorField& U,
+    const volScalarField& p
+)
+:
+    lattice_(lattice),
+    vs_(vs),
+    nUnclassified_(0)
+{
+    classifyPatches(U, p);
+
+    const fvMesh& mesh = lattice_.mesh();
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const List<unsigned char>& kind = lattice_.kind();
+    const labelVector& stride = lattice_.stride();
+    const label nBox = lattice_.nBox();
+    const label Q = vs_.Q();
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+    const labelList& opp = vs_.opp();
+
+    DynamicList<label> copyGhost, copySource;
+    DynamicList<scalar> copyValue;
+    DynamicList<label> abbGhost, abbSource, abbNode, abbDir;
+    DynamicList<scalar> abbRho;
+    patchLinks_.setSize(patches.size(), 0);
+
+    auto offsetOf = [&stride](const labelVector& v)
+    {
+        return v.x()*stride.x() + v.y()*stride.y() + v.z()*stride.z();
+    };
+
+    for (const label x : lattice_.cellNode())
+    {
+        for (label q = 1; q < Q; ++q)
+        {
+            const label s = x - offsetOf(c[q]);
+            if (kind[s] != latticeMesh::WALL)
+            {
+                continue;
+            }
+
+            const label ghost = q*nBox + s;
+            const Pair<label> fa = wallFace(x, q);
+            const label facei = fa.first();
+
+            if (facei < 0)
+            {
+                // No face found (a corner of missing cells): wall at rest
+                ++nUnclassified_;
+                copyGhost.append(ghost);
+                copySource.append(opp[q]*nBox + x);
+                copyValue.append(0);
+                continue;
+            }
+
+            const label patchi = patches.whichPatch(facei);
+            const label patchFacei = facei - patches[patchi].start();
+            ++patchLinks_[patchi];
+
+            switch (patchKinds_[patchi])
+            {
+                case PRESSURE:
+                {
+                    abbGhost.append(ghost);
+                    abbSource.append(opp[q]*nBox + x);
+                    abbNode.append(x);
+                    abbDir.append(q);
+                    abbRho.append
+                    (
+                        units.rhoLattice(p.boundaryField()[patchi][patchFacei])
+                    );
+                    break;
+                }
+                case SLIP:
+                {
+                    const direction a = fa.second();
+                    labelVector mirror(c[q]);
+                    mirror[a] = -mirror[a];
+                    labelVector tangential(c[q]);
+                    tangential[a] = 0;
+                    const label qm = vs_.direction(mirror);
+                    const label y = x - offsetOf(tangential);
+                    if
+                    (
+                        tangential != labelVector::zero
+                     && qm > 0
+                     && (
+                            kind[y] == latticeMesh::OWNED
+                         || kind[y] == latticeMesh::HALO
+                        )
+                    )
+                    {
+                        copyGhost.append(ghost);
+                        copySource.append(qm*nBox + y);
+                        copyValue.append(0);
+                        break;
+                    }
+                    // Normal link, or a corner: bounce back
+                    copyGhost.append(ghost);
+                    copySource.append(opp[q]*nBox + x);
+                    copyValue.append(0);
+                    break;
+                }
+                case MOVINGWALL:
+                {
+                    const vector uw = units.toLattice
+                    (
+                        U.boundaryField()[patchi][patchFacei]
+                    );
+                    const scalar cu =
+                        c[q].x()*uw.x() + c[q].y()*uw.y() + c[q].z()*uw.z();
+                    copyGhost.append(ghost);
+                    copySource.append(opp[q]*nBox + x);
+                    copyValue.append(6.0*w[q]*cu);
+                    break;
+                }
+                default:
+                {
+                    copyGhost.append(ghost);
+                    copySource.append(opp[q]*nBox + x);
+                    copyValue.append(0);
+                }
+            }
+        }
+    }
+
+    copyGhost_.transfer(copyGhost);
+    copySource_.transfer(copySource);
+    copyValue_.transfer(copyValue);
+    abbGhost_.transfer(abbGhost);
+    abbSource_.transfer(abbSource);
+    abbNode_.transfer(abbNode);
+    abbDir_.transfer(abbDir);
+    abbRho_.transfer(abbRho);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::lbmBoundaries::fill(scalar* f) const
+{
+    const label n = copyGhost_.size();
+    const label* ghost = copyGhost_.cdata();
+    const label* src = copySource_.cdata();
+    const scalar* val = copyValue_.cdata();
+    for (label i = 0; i < n; ++i)
+    {
+        f[ghost[i]] = f[src[i]] + val[i];
+    }
+
+    if (abbGhost_.empty())
+    {
+        return;
+    }
+
+    // Anti-bounce-back: velocity of the boundary node from its
+    // post-collision populations
+    const label nBox = lattice_.nBox();
+    const label Q = vs_.Q();
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+    forAll(abbGhost_, i)
+    {
+        const label x = abbNode_[i];
+        scalar rho = 0;
+        vector j(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            const scalar fq = f[q*nBox + x];
+            rho += fq;
+            j += fq*vector(c[q]);
+        }
+        const vector u = j/rho;
+        const label q = abbDir_[i];
+        const scalar cu = vector(c[q]) & u;
+        f[abbGhost_[i]] =
+            -f[abbSource_[i]]
+          + 2.0*w[q]*abbRho_[i]*(1.0 + 4.5*cu*cu - 1.5*magSqr(u));
+    }
+}
+
+
+void Foam::lbmBoundaries::report(Ostream& os) const
+{
+    const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();
+    labelList links(patchLinks_);
+    Pstream::listCombineGather(links, plusEqOp<label>());
+    Pstream::listCombineScatter(links);
+
+    os  << "Lattice Boltzmann boundaries" << nl;
+    forAll(patches, patchi)
+    {
+        if (patchKinds_[patchi] == NONE)
+        {
+            continue;
+        }
+        os  << "    " << patches[patchi].name() << ": "
+            << patchKindNames[patchKinds_[patchi]] << " (" << links[patchi]
+            << " links)" << nl;
+    }
+    const label nUn = returnReduce(nUnclassified_, sumOp<label>());
+    if (nUn)
+    {
+        os  << "    " << nUn << " corner links with no face to classify them:"
+            << " bounce-back" << nl;
+    }
+    os  << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,70 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fluidEffect.H"
+#include "physicsScene.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace physicsEffects
+{
+    defineTypeNameAndDebug(fluid, 0);
+    addToRunTimeSelectionTable(physicsEffect, fluid, scene);
+}
+}
+
+
+Foam::physicsEffects::fluid::fluid(physicsScene& scene)
+:
+    physicsEffect(scene),
+    lbm_(scene.lattice(1))
+{}
+
+
+void Foam::physicsEffects::fluid::evolve()
+{
+    lbm_.step();
+}
+
+
+void Foam::physicsEffects::fluid::write()
+{
+    lbm_.updateFields();
+    lbm_.writePopulations();
+}
+
+
+Foam::scalar Foam::physicsEffects::fluid::updatesPerStep() const
+{
+    return lbm_.nNodes();
+}
+
+
+Foam::scalar Foam::physicsEffects::fluid::memoryBytes() const
+{
+    return lbm_.memoryBytes();
+}
+
+
+Foam::string Foam::physicsEffects::fluid::progress() const
+{
+    const lbmKernelStats& s = lbm_.stats();
+    const scalar Ma = std::sqrt(returnReduce(s.u2Max, maxOp<scalar>())*3.0);
+    return
+        "Mach " + Foam::name(Ma)
+      + "  mass defect " + Foam::name(lbm_.massDefect());
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,253 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "haloExchange.H"
+#include "PstreamBuffers.H"
+#include "DynamicList.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::haloExchange::haloExchange()
+:
+    sendNodes_(Pstream::nProcs()),
+    recvNodes_(Pstream::nProcs())
+{}
+
+
+Foam::haloExchange::haloExchange
+(
+    const labelUList& haloNodes,
+    const labelUList& haloOwnerProc,
+    const labelUList& haloOwnerNode
+)
+:
+    sendNodes_(Pstream::nProcs()),
+    recvNodes_(Pstream::nProcs())
+{
+    const label nProcs = Pstream::nProcs();
+
+    List<DynamicList<label>> recv(nProcs);
+    List<DynamicList<label>> request(nProcs);
+    forAll(haloNodes, i)
+    {
+        recv[haloOwnerProc[i]].append(haloNodes[i]);
+        request[haloOwnerProc[i]].append(haloOwnerNode[i]);
+    }
+    forAll(recv, proci)
+    {
+        recvNodes_[proci].transfer(recv[proci]);
+    }
+
+    // Tell each owner which of its nodes we need, in our receive order
+    const label myProc = Pstream::myProcNo();
+    sendNodes_[myProc] = request[myProc];
+
+    if (Pstream::parRun())
+    {
+        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+        for (label proci = 0; proci < nProcs; ++proci)
+        {
+            if (proci != myProc)
+            {
+                UOPstream toProc(proci, pBufs);
+                toProc << labelList(request[proci]);
+            }
+        }
+        pBufs.finishedSends();
+        for (label proci = 0; proci < nProcs; ++proci)
+        {
+            if (proci != myProc)
+            {
+                UIPstream fromProc(proci, pBufs);
+                fromProc >> sendNodes_[proci];
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::haloExchange::nRecv() const
+{
+    label n = 0;
+    forAll(recvNodes_, proci)
+    {
+        n += recvNodes_[proci].size();
+    }
+    return n;
+}
+
+
+Foam::label Foam::haloExchange::nSend() const
+{
+    label n = 0;
+    forAll(sendNodes_, proci)
+    {
+        n += sendNodes_[proci].size();
+    }
+    return n;
+}
+
+
+Foam::labelList Foam::haloExchange::neighbours() const
+{
+    DynamicList<label> procs;
+    forAll(recvNodes_, proci)
+    {
+        if (recvNodes_[proci].size() || sendNodes_[proci].size())
+        {
+            procs.append(proci);
+        }
+    }
+    return labelList(procs);
+}
+
+
+void Foam::haloExchange::exchange
+(
+    scalar* data,
+    const labelUList& components,
+    const label componentStride
+) const
+{
+    const label myProc = Pstream::myProcNo();
+
+    // Periodic copies within this processor first: no communication
+    {
+        const labelList& send = sendNodes_[myProc];
+        const labelList& recv = recvNodes_[myProc];
+        forAll(components, ci)
+        {
+            scalar* __restrict__ d = data + components[ci]*componentStride;
+            forAll(send, i)
+            {
+                d[recv[i]] = d[send[i]];
+            }
+        }
+    }
+
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    const label nComp = components.size();
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+
+    forAll(sendNodes_, proci)
+    {
+        const labelList& send = sendNodes_[proci];
+        if (proci == myProc || send.empty())
+        {
+            continue;
+        }
+        scalarList buf(nComp*send.size());
+        label k = 0;
+        forAll(components, ci)
+        {
+            const scalar* d = data + components[ci]*componentStride;
+            forAll(send, i)
+            {
+                buf[k++] = d[send[i]];
+            }
+        }
+        UOPstream toProc(proci, pBufs);
+        toProc << buf;
+    }
+    pBufs.finishedSends();
+
+    forAll(recvNodes_, proci)
+    {
+        const labelList& recv = recvNodes_[proci];
+        if (proci == myProc || recv.empty())
+        {
+            continue;
+        }
+        scalarList buf;
+        UIPstream fromProc(proci, pBufs);
+        fromProc >> buf;
+        label k = 0;
+        forAll(components, ci)
+        {
+            scalar* d = data + components[ci]*componentStride;
+            forAll(recv, i)
+            {
+                d[recv[i]] = buf[k++];
+            }
+        }
+    }
+}
+
+
+void Foam::haloExchange::exchange
+(
+    scalar* data,
+    const label nComponents,
+    const label componentStride
+) const
+{
+    labelList components(nComponents);
+    forAll(components, ci)
+    {
+        components[ci] = ci;
+    }
+    exchange(data, components, componentStride);
+}
+
+
+void Foam::haloExchange::exchange(labelUList& data) const
+{
+    const label myProc = Pstream::myProcNo();
+    {
+        const labelList& send = sendNodes_[myProc];
+        const labelList& recv = recvNodes_[myProc];
+        forAll(send, i)
+        {
+            data[recv[i]] = data[send[i]];
+        }
+    }
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(sendNodes_, proci)
+    {
+        const labelList& send = sendNodes_[proci];
+        if (proci != myProc && send.size())
+        {
+            UOPstream toProc(proci, pBufs);
+            toProc << labelList(UIndirectList<label>(data, send));
+        }
+    }
+    pBufs.finishedSends();
+    forAll(recvNodes_, proci)
+    {
+        const labelList& recv = recvNodes_[proci];
+        if (proci != myProc && recv.size())
+        {
+            labelList buf;
+            UIPstream fromProc(proci, pBufs);
+            fromProc >> buf;
+            forAll(recv, i)
+            {
+                data[recv[i]] = buf[i];
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //
