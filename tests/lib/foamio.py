@@ -1,0 +1,105 @@
+#------------------------------------------------------------------------------
+#   mpmLbmFoam: coupled material point / lattice Boltzmann soil-water solver
+#------------------------------------------------------------------------------
+# Module
+#     foamio
+#
+# Description
+#     Reads what the tests need from OpenFOAM cases written in ascii: the
+#     internalField of volScalarField and volVectorField files, time folders,
+#     and a uniform lattice view of a 2D or 3D case (cell centres to (i,j,k)).
+#     Run with Debian's /usr/bin/python3 (numpy).
+#------------------------------------------------------------------------------
+import os
+import re
+import numpy as np
+
+
+def _strip_comments(text):
+    text = re.sub(r'/\*.*?\*/', ' ', text, flags=re.S)
+    return re.sub(r'//[^\n]*', ' ', text)
+
+
+def read_internal_field(path):
+    """internalField of an ascii field file: shape (n,) or (n, 3)."""
+    with open(path, 'r', errors='replace') as f:
+        text = _strip_comments(f.read())
+    m = re.search(r'\binternalField\s+', text)
+    if not m:
+        raise ValueError('%s: no internalField' % path)
+    rest = text[m.end():]
+    if rest.startswith('uniform'):
+        value = rest[len('uniform'):].split(';', 1)[0].strip()
+        value = value.strip('()').split()
+        return np.array([float(v) for v in value])
+    m2 = re.match(r'nonuniform\s+List<(\w+)>\s*(\d+)\s*\(', rest)
+    if not m2:
+        raise ValueError('%s: cannot parse internalField' % path)
+    kind, n = m2.group(1), int(m2.group(2))
+    body = rest[m2.end():]
+    # The list ends at the first ')' followed by ';' at its level
+    end = body.find(')\n;')
+    if end < 0:
+        end = body.rfind(')')
+    numbers = np.array(body[:end].replace('(', ' ').replace(')', ' ').split(),
+                       dtype=float)
+    ncomp = {'scalar': 1, 'vector': 3, 'symmTensor': 6, 'tensor': 9,
+             'label': 1}[kind]
+    if numbers.size != n * ncomp:
+        raise ValueError('%s: expected %d values, read %d'
+                         % (path, n * ncomp, numbers.size))
+    return numbers if ncomp == 1 else numbers.reshape(n, ncomp)
+
+
+def times(case):
+    """Numeric time folders of a case, sorted (as strings and floats)."""
+    out = []
+    for d in os.listdir(case):
+        try:
+            t = float(d)
+        except ValueError:
+            continue
+        if os.path.isdir(os.path.join(case, d)):
+            out.append((t, d))
+    out.sort()
+    return [d for _, d in out]
+
+
+def latest_time(case):
+    return times(case)[-1]
+
+
+def read(case, time, name):
+    return read_internal_field(os.path.join(case, str(time), name))
+
+
+class Lattice(object):
+    """Cell centres of a uniform mesh mapped to a (nx, ny, nz) array."""
+
+    def __init__(self, centres):
+        c = np.asarray(centres)
+        self.lo = c.min(axis=0)
+        hi = c.max(axis=0)
+        diffs = np.diff(np.unique(np.round(c[:, 0], 12)))
+        self.dx = diffs.min() if diffs.size else 1.0
+        self.n = tuple(int(round(v)) + 1 for v in (hi - self.lo) / self.dx)
+        self.ijk = np.rint((c - self.lo) / self.dx).astype(int)
+        self.centres = c
+
+    def grid(self, values):
+        """Values per cell into an array indexed [i, j, k(, comp)]."""
+        values = np.asarray(values)
+        shape = self.n + values.shape[1:]
+        out = np.full(shape, np.nan)
+        out[self.ijk[:, 0], self.ijk[:, 1], self.ijk[:, 2]] = values
+        return out
+
+    def axis(self, d):
+        return self.lo[d] + self.dx * np.arange(self.n[d])
+
+
+def check(ok, what, value=None):
+    """Print a PASS:/FAIL: line; return ok."""
+    suffix = '' if value is None else ' (%s)' % value
+    print('%s: %s%s' % ('PASS' if ok else 'FAIL', what, suffix))
+    return ok
