@@ -1,0 +1,539 @@
+#------------------------------------------------------------------------------
+#   mpmLbmFoam: coupled material point / lattice Boltzmann soil-water solver
+#------------------------------------------------------------------------------
+# Script
+#     tests/lib/pvCheckCase.py
+#
+# Description
+#     Headless check of a case's results through ParaView's OpenFOAM reader,
+#     i.e. what a user will see in paraFoam. Run with pvpython (or pvbatch),
+#     under a virtual X server:
+#
+#         xvfb-run -a pvpython tests/lib/pvCheckCase.py --case DIR \
+#             [--time latest|T] [--field NAME:MIN:MAX ...] \
+#             [--cloud NAME:N | --cloud NAME:NMIN:NMAX ...] \
+#             [--cloud-field CLOUD:NAME:MIN:MAX ...] [--decomposed] \
+#             [--png FILE [--resolution WxH] [--colour-by NAME]]
+#
+#     It opens DIR/case.foam (made empty if missing), goes to the requested
+#     time (default: the latest one, the 0 directory included) and checks:
+#       --field NAME:MIN:MAX          cell field NAME of the internal mesh is
+#                                     there, finite, and its range lies within
+#                                     [MIN, MAX] (vectors and tensors: range
+#                                     of the magnitude)
+#       --cloud NAME:N                lagrangian cloud NAME has N points
+#       --cloud NAME:NMIN:NMAX        ... between NMIN and NMAX points
+#       --cloud-field CLOUD:NAME:MIN:MAX   the same range check as --field on
+#                                     a field of a lagrangian cloud
+#     MIN and MAX may be 'inf' and '-inf'. With --png it renders the internal
+#     mesh coloured by the first --field (or --colour-by), with a colour bar,
+#     the time in a text annotation, and the clouds as points.
+#
+#     Prints one 'PASS ...' or 'FAIL ...' line per check, then a summary,
+#     and exits 1 if any check failed (2 on a usage error), 0 otherwise.
+#
+#     Notes on ParaView 5.11's reader (vtkOpenFOAMReader):
+#       - time 0 is skipped unless SkipZeroTime is off (it is off here, but
+#         the time list only changes after the reader's Refresh);
+#       - a cloud is listed in MeshRegions as 'lagrangian/<cloudName>' once
+#         any time directory holds <time>/lagrangian/<cloudName>/positions
+#         (the '(x y z) celli' format; a cloud with only the barycentric
+#         'coordinates' file is not seen); its fields are LagrangianArrays;
+#       - the output is a multiblock: /internalMesh (unstructured grid) and
+#         /lagrangian/<cloudName> (polydata, one vertex per particle, the
+#         fields as both point and cell data, empty at times without it).
+#------------------------------------------------------------------------------
+
+import argparse
+import os
+import sys
+
+
+def parseRange(text, what):
+    """'-1e3' -> float; accepts inf/-inf"""
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            "bad %s '%s' (not a number)" % (what, text))
+
+
+def fieldSpec(text):
+    """NAME:MIN:MAX -> (NAME, MIN, MAX)"""
+    parts = text.rsplit(':', 2)
+    if len(parts) != 3 or not parts[0]:
+        raise argparse.ArgumentTypeError(
+            "field check '%s' is not NAME:MIN:MAX" % text)
+    lo = parseRange(parts[1], 'minimum')
+    hi = parseRange(parts[2], 'maximum')
+    if lo > hi:
+        raise argparse.ArgumentTypeError(
+            "field check '%s': minimum above maximum" % text)
+    return (parts[0], lo, hi)
+
+
+def cloudSpec(text):
+    """NAME:N or NAME:NMIN:NMAX -> (NAME, NMIN, NMAX)"""
+    parts = text.split(':')
+    try:
+        if len(parts) == 2 and parts[0]:
+            n = int(parts[1])
+            return (parts[0], n, n)
+        if len(parts) == 3 and parts[0]:
+            return (parts[0], int(parts[1]), int(parts[2]))
+    except ValueError:
+        pass
+    raise argparse.ArgumentTypeError(
+        "cloud check '%s' is not NAME:N or NAME:NMIN:NMAX" % text)
+
+
+def cloudFieldSpec(text):
+    """CLOUD:NAME:MIN:MAX -> (CLOUD, NAME, MIN, MAX)"""
+    cloud, sep, rest = text.partition(':')
+    if not sep or not cloud:
+        raise argparse.ArgumentTypeError(
+            "cloud field check '%s' is not CLOUD:NAME:MIN:MAX" % text)
+    name, lo, hi = fieldSpec(rest)
+    return (cloud, name, lo, hi)
+
+
+def resolutionSpec(text):
+    """WxH -> [W, H]"""
+    try:
+        w, h = (int(x) for x in text.lower().split('x'))
+        if w > 0 and h > 0:
+            return [w, h]
+    except ValueError:
+        pass
+    raise argparse.ArgumentTypeError("resolution '%s' is not WxH" % text)
+
+
+def cloudRegion(name):
+    """'materialPoints' or 'lagrangian/materialPoints' -> region name"""
+    name = name.strip('/')
+    return name if name.startswith('lagrangian/') else 'lagrangian/' + name
+
+
+def parseArgs(argv):
+    p = argparse.ArgumentParser(
+        prog='pvCheckCase.py',
+        description="Check a case's fields and clouds through ParaView's "
+                    "OpenFOAM reader, and optionally render a PNG.")
+    p.add_argument('--case', required=True, help='case directory')
+    p.add_argument('--time', default='latest',
+                   help="'latest' (default) or a time value")
+    p.add_argument('--field', action='append', default=[], type=fieldSpec,
+                   metavar='NAME:MIN:MAX',
+                   help='check the range of a cell field (vectors: '
+                        'magnitude); repeatable')
+    p.add_argument('--cloud', action='append', default=[], type=cloudSpec,
+                   metavar='NAME:N',
+                   help='check that lagrangian cloud NAME has N points '
+                        '(or NAME:NMIN:NMAX); repeatable')
+    p.add_argument('--cloud-field', action='append', default=[],
+                   type=cloudFieldSpec, metavar='CLOUD:NAME:MIN:MAX',
+                   help='check the range of a field of a cloud; repeatable')
+    p.add_argument('--decomposed', action='store_true',
+                   help='read the processor* directories instead')
+    p.add_argument('--png', help='render the result to this PNG file')
+    p.add_argument('--resolution', type=resolutionSpec, default=[800, 600],
+                   metavar='WxH', help='PNG size (default 800x600)')
+    p.add_argument('--colour-by', '--color-by', dest='colourBy',
+                   help='field to colour the mesh by in the PNG '
+                        '(default: the first --field)')
+    args = p.parse_args(argv)
+
+    if args.time != 'latest':
+        try:
+            args.time = float(args.time)
+        except ValueError:
+            p.error("--time '%s' is neither 'latest' nor a number" % args.time)
+
+    if not (args.field or args.cloud or args.cloud_field or args.png):
+        p.error('nothing to do: give --field, --cloud, --cloud-field or --png')
+
+    return args
+
+
+#------------------------------------------------------------------------------
+# Walking the reader's output
+
+def blocksByPath(dataset, prefix='', found=None):
+    """{'/internalMesh': vtkDataSet, '/lagrangian/cloud': ...} of the
+    leaves of a multiblock, named as the reader names its blocks"""
+    if found is None:
+        found = {}
+    if dataset is None:
+        return found
+    if dataset.IsA('vtkMultiBlockDataSet'):
+        for i in range(dataset.GetNumberOfBlocks()):
+            name = None
+            if dataset.HasMetaData(i):
+                name = dataset.GetMetaData(i).Get(dataset.NAME())
+            blocksByPath(dataset.GetBlock(i),
+                         prefix + '/' + (name or 'block%d' % i), found)
+    elif dataset.IsA('vtkMultiPieceDataSet'):
+        # Possible with a decomposed case read in parallel: keep the pieces
+        pieces = [dataset.GetPiece(i)
+                  for i in range(dataset.GetNumberOfPieces())]
+        found[prefix] = [piece for piece in pieces if piece is not None]
+    else:
+        found[prefix] = dataset
+    return found
+
+
+def asList(dataset):
+    if dataset is None:
+        return []
+    return dataset if isinstance(dataset, list) else [dataset]
+
+
+def arrayValues(datasets, name, association):
+    """(numpy values, components) of array NAME gathered over datasets,
+    vectors and tensors as magnitudes; (None, 0) if a non-empty dataset
+    lacks it; (empty array, 0) if all datasets are empty"""
+    import numpy
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    chunks = []
+    nComp = 0
+    for ds in datasets:
+        if association == 'CELLS':
+            data, size = ds.GetCellData(), ds.GetNumberOfCells()
+        else:
+            data, size = ds.GetPointData(), ds.GetNumberOfPoints()
+        array = data.GetArray(name)
+        if array is None:
+            if size:
+                return (None, 0)
+            continue
+        values = vtk_to_numpy(array).astype(float)
+        nComp = array.GetNumberOfComponents()
+        if nComp > 1:
+            values = numpy.sqrt((values.reshape(-1, nComp)**2).sum(axis=1))
+        chunks.append(values.ravel())
+    if not chunks:
+        return (numpy.zeros(0), 0) if datasets else (None, 0)
+    return (numpy.concatenate(chunks), nComp)
+
+
+def fmt(x):
+    return '%.6g' % x
+
+
+def checkRange(label, values, nComp, lo, hi, what):
+    """One PASS/FAIL line for the range of values; returns True on PASS"""
+    import numpy
+    if values is None:
+        print('FAIL %s: no such field' % label)
+        return False
+    if values.size == 0:
+        print('FAIL %s: field is empty (0 %s)' % (label, what))
+        return False
+    bad = int(numpy.count_nonzero(~numpy.isfinite(values)))
+    if bad:
+        print('FAIL %s: %d of %d %s not finite (NaN/inf)'
+              % (label, bad, values.size, what))
+        return False
+    vMin = float(values.min())
+    vMax = float(values.max())
+    ok = lo <= vMin and vMax <= hi
+    print('%s %s: %s [%s, %s] %s [%s, %s] (%d %s)'
+          % ('PASS' if ok else 'FAIL', label,
+             'magnitude range' if nComp > 1 else 'range', fmt(vMin), fmt(vMax),
+             'within' if ok else 'NOT within', fmt(lo), fmt(hi),
+             values.size, what))
+    return ok
+
+
+#------------------------------------------------------------------------------
+# Rendering
+
+def render(args, reader, time, blocks, clouds, colourField):
+    import paraview.simple as pv
+
+    width, height = args.resolution
+    view = pv.CreateView('RenderView')
+    view.ViewSize = [width, height]
+    view.ViewTime = time
+    view.OrientationAxesVisibility = 1
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    view.Background = [1.0, 1.0, 1.0]
+    black = [0.0, 0.0, 0.0]
+
+    # The internal mesh, coloured by the field
+    mesh = pv.ExtractBlock(Input=reader, Selectors=['/Root/internalMesh'])
+    meshDisplay = pv.Show(mesh, view)
+    meshDisplay.Representation = 'Surface'
+    if colourField:
+        field, nComp, (vMin, vMax) = colourField
+        if nComp > 1:
+            pv.ColorBy(meshDisplay, ('CELLS', field, 'Magnitude'))
+        else:
+            pv.ColorBy(meshDisplay, ('CELLS', field))
+        lut = pv.GetColorTransferFunction(field)
+        if vMax <= vMin:
+            vMax = vMin + max(abs(vMin), 1.0) * 1e-6
+        lut.RescaleTransferFunction(vMin, vMax)
+        pv.GetOpacityTransferFunction(field).RescaleTransferFunction(vMin, vMax)
+        lut.AutomaticRescaleRangeMode = 'Never'
+        meshDisplay.SetScalarBarVisibility(view, True)
+        bar = pv.GetScalarBar(lut, view)
+        bar.Title = field
+        bar.ComponentTitle = '(magnitude)' if nComp > 1 else ''
+        bar.TitleColor = black
+        bar.LabelColor = black
+        bar.RangeLabelFormat = '%-.4g'
+    else:
+        meshDisplay.ColorArrayName = ['POINTS', '']
+        meshDisplay.AmbientColor = meshDisplay.DiffuseColor = [0.8, 0.8, 0.8]
+
+    # Camera: along the thin direction of a 2D-like mesh, else isometric
+    bounds = None
+    for ds in asList(blocks.get('/internalMesh')):
+        b = ds.GetBounds()
+        if bounds is None:
+            bounds = list(b)
+        else:
+            bounds = [min(bounds[0], b[0]), max(bounds[1], b[1]),
+                      min(bounds[2], b[2]), max(bounds[3], b[3]),
+                      min(bounds[4], b[4]), max(bounds[5], b[5])]
+    flat = False
+    if bounds:
+        size = [bounds[1] - bounds[0], bounds[3] - bounds[2],
+                bounds[5] - bounds[4]]
+        centre = [(bounds[2*i] + bounds[2*i + 1])/2 for i in range(3)]
+        thin = min(range(3), key=lambda i: size[i])
+        flat = size[thin] < 0.05 * max(size)
+        if flat:
+            direction = [0.0, 0.0, 0.0]
+            direction[thin] = 1.0
+            up = [0.0, 0.0, 1.0] if thin != 2 else [0.0, 1.0, 0.0]
+        else:
+            direction = [1.0, -1.0, 1.0]
+            up = [0.0, 0.0, 1.0]
+        view.CameraFocalPoint = centre
+        view.CameraPosition = [centre[i] + direction[i] for i in range(3)]
+        view.CameraViewUp = up
+    view.CameraParallelProjection = 1 if flat else 0
+
+    # The clouds, as points on top: in a 2D-like mesh particles lie inside
+    # the slab, behind its front face, so they are moved out towards the
+    # camera; in 3D the mesh is made see-through instead
+    for region in clouds:
+        cloud = pv.ExtractBlock(Input=reader, Selectors=['/Root/' + region])
+        cloudDisplay = pv.Show(cloud, view)
+        cloudDisplay.Representation = 'Points'
+        cloudDisplay.ColorArrayName = ['POINTS', '']
+        cloudDisplay.AmbientColor = cloudDisplay.DiffuseColor = black
+        cloudDisplay.PointSize = 6.0
+        try:
+            cloudDisplay.RenderPointsAsSpheres = 1
+        except AttributeError:
+            pass
+        if flat:
+            shift = [0.0, 0.0, 0.0]
+            shift[thin] = 1.01 * size[thin]
+            cloudDisplay.Position = shift
+        elif bounds:
+            meshDisplay.Opacity = 0.35
+
+    # Time and case in the upper left corner
+    label = 'time = %s' % fmt(time)
+    label += '\ncase: %s' % os.path.basename(os.path.abspath(args.case))
+    if colourField:
+        label += '\nfield: %s' % colourField[0]
+    text = pv.Text(Text=label)
+    textDisplay = pv.Show(text, view)
+    textDisplay.WindowLocation = 'Upper Left Corner'
+    textDisplay.FontSize = 16
+    textDisplay.Justification = 'Left'
+    textDisplay.Color = black
+
+    view.ResetCamera()
+    pv.Render(view)
+    pngDir = os.path.dirname(os.path.abspath(args.png))
+    if not os.path.isdir(pngDir):
+        os.makedirs(pngDir)
+    pv.SaveScreenshot(args.png, view, ImageResolution=[width, height])
+
+    # Close the render window now: left to the interpreter's exit, a view
+    # without a coloured representation ends in an X error (GLXBadContext)
+    # that turns the exit status into 1
+    pv.Delete(view)
+
+
+#------------------------------------------------------------------------------
+
+def main(argv):
+    args = parseArgs(argv)
+
+    caseDir = os.path.abspath(args.case)
+    if not os.path.isdir(os.path.join(caseDir, 'system')):
+        print('FAIL case %s: no such case (no system directory)' % caseDir)
+        return 1
+
+    foamFile = os.path.join(caseDir, 'case.foam')
+    if not os.path.exists(foamFile):
+        open(foamFile, 'a').close()
+
+    import paraview.simple as pv
+    from paraview import servermanager
+
+    reader = pv.OpenFOAMReader(FileName=foamFile)
+    reader.CaseType = 'Decomposed Case' if args.decomposed \
+        else 'Reconstructed Case'
+    reader.SkipZeroTime = 0
+    reader.Createcelltopointfiltereddata = 0
+    reader.Adddimensionalunitstoarraynames = 0
+    # The time list was made when FileName was set: make it again, with 0
+    reader.Refresh()
+    reader.UpdatePipelineInformation()
+
+    nFail = 0
+    nCheck = 0
+
+    # Time
+    times = reader.TimestepValues
+    if isinstance(times, (int, float)):
+        times = [times]
+    times = sorted(float(t) for t in (times or []))
+    if not times:
+        print('FAIL time %s: the case has no time directories the reader can '
+              'read' % args.time)
+        return 1
+    if args.time == 'latest':
+        time = times[-1]
+    else:
+        time = min(times, key=lambda t: abs(t - args.time))
+        if abs(time - args.time) > 1e-9 * max(1.0, abs(args.time)):
+            print('FAIL time %s: not in the case (times: %s)'
+                  % (fmt(args.time), ' '.join(fmt(t) for t in times)))
+            return 1
+
+    # Regions and arrays
+    available = list(reader.GetProperty('MeshRegions').Available)
+    regions = ['internalMesh']
+    clouds = []
+    for name in [c[0] for c in args.cloud] + [c[0] for c in args.cloud_field]:
+        region = cloudRegion(name)
+        if region in available and region not in regions:
+            regions.append(region)
+            clouds.append(region)
+    reader.MeshRegions = regions
+    reader.CellArrays = list(reader.CellArrays.Available)
+    if clouds:
+        reader.LagrangianArrays = list(reader.LagrangianArrays.Available)
+
+    reader.UpdatePipeline(time)
+    blocks = blocksByPath(servermanager.Fetch(reader))
+    internal = asList(blocks.get('/internalMesh'))
+    nCells = sum(ds.GetNumberOfCells() for ds in internal)
+
+    print('pvCheckCase: case %s, time %s (times: %s), %d cells'
+          % (caseDir, fmt(time), ' '.join(fmt(t) for t in times), nCells))
+
+    # Fields of the internal mesh
+    colourField = None
+    for name, lo, hi in args.field:
+        nCheck += 1
+        values, nComp = arrayValues(internal, name, 'CELLS')
+        if values is None:
+            print('FAIL field %s @ t=%s: not found at this time '
+                  '(cell fields of the case: %s)'
+                  % (name, fmt(time), ', '.join(reader.CellArrays.Available)
+                     or 'none'))
+            nFail += 1
+            continue
+        if not checkRange('field %s @ t=%s' % (name, fmt(time)),
+                          values, nComp, lo, hi, 'cells'):
+            nFail += 1
+
+    # Clouds
+    cloudNames = ', '.join(r[len('lagrangian/'):] for r in available
+                           if r.startswith('lagrangian/')) or 'none'
+    for name, nMin, nMax in args.cloud:
+        nCheck += 1
+        region = cloudRegion(name)
+        label = 'cloud %s @ t=%s' % (region[len('lagrangian/'):], fmt(time))
+        if region not in available:
+            print('FAIL %s: not found (clouds: %s; the reader needs '
+                  '<time>/%s/positions)' % (label, cloudNames, region))
+            nFail += 1
+            continue
+        n = sum(ds.GetNumberOfPoints()
+                for ds in asList(blocks.get('/' + region)))
+        expected = str(nMin) if nMin == nMax else '%d..%d' % (nMin, nMax)
+        ok = nMin <= n <= nMax
+        print('%s %s: %d points (expected %s)'
+              % ('PASS' if ok else 'FAIL', label, n, expected))
+        if not ok:
+            nFail += 1
+
+    for cloudName, name, lo, hi in args.cloud_field:
+        nCheck += 1
+        region = cloudRegion(cloudName)
+        label = 'cloud field %s/%s @ t=%s' \
+            % (region[len('lagrangian/'):], name, fmt(time))
+        if region not in available:
+            print('FAIL %s: cloud not found (clouds: %s)' % (label, cloudNames))
+            nFail += 1
+            continue
+        values, nComp = arrayValues(asList(blocks.get('/' + region)), name,
+                                    'POINTS')
+        if values is None:
+            print('FAIL %s: not found (cloud fields: %s)'
+                  % (label, ', '.join(reader.LagrangianArrays.Available)
+                     or 'none'))
+            nFail += 1
+            continue
+        if not checkRange(label, values, nComp, lo, hi, 'points'):
+            nFail += 1
+
+    # Picture
+    if args.png:
+        fieldName = args.colourBy or (args.field[0][0] if args.field else None)
+        if fieldName:
+            values, nComp = arrayValues(internal, fieldName, 'CELLS')
+            if values is not None and values.size:
+                import numpy
+                finite = values[numpy.isfinite(values)]
+                if finite.size:
+                    colourField = (fieldName, nComp,
+                                   (float(finite.min()), float(finite.max())))
+            if colourField is None:
+                print('pvCheckCase: cannot colour by %s: not a cell field '
+                      'with values; PNG shows the bare mesh' % fieldName)
+        nCheck += 1
+        if os.path.exists(args.png):
+            os.remove(args.png)
+        try:
+            render(args, reader, time, blocks, clouds, colourField)
+        except Exception as error:
+            print('FAIL png %s: rendering failed: %s: %s'
+                  % (args.png, type(error).__name__, error))
+            nFail += 1
+        else:
+            written = os.path.isfile(args.png) \
+                and os.path.getsize(args.png) > 0
+            # An explicit --colour-by that cannot be shown is a failure too
+            ok = written and (colourField is not None or not args.colourBy)
+            print('%s png %s: %s%dx%d, coloured by %s'
+                  % ('PASS' if ok else 'FAIL', args.png,
+                     '' if written else 'NOT WRITTEN, ',
+                     args.resolution[0], args.resolution[1],
+                     colourField[0] if colourField else 'nothing'))
+            if not ok:
+                nFail += 1
+
+    print('pvCheckCase: %d checks, %d failed' % (nCheck, nFail))
+    return 1 if nFail else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))
+
+#------------------------------------------------------------------------------
