@@ -20,10 +20,38 @@ def _strip_comments(text):
     return re.sub(r'//[^\n]*', ' ', text)
 
 
+_NCOMP = {'scalar': 1, 'vector': 3, 'symmTensor': 6, 'tensor': 9,
+          'label': 1}
+
+
+def _read_binary(raw, path):
+    """internalField of a binary field file (double precision, 32-bit
+    labels, as Debian's OpenFOAM writes them)."""
+    i = raw.find(b'internalField')
+    m = re.compile(rb'internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(')
+    mm = m.search(raw, i)
+    if not mm:
+        u = re.compile(rb'internalField\s+uniform\s+([^;]*);').search(raw, i)
+        vals = u.group(1).decode().strip('()').split()
+        return np.array([float(v) for v in vals])
+    kind, n = mm.group(1).decode(), int(mm.group(2))
+    ncomp = _NCOMP[kind]
+    dtype = np.int32 if kind == 'label' else np.float64
+    data = np.frombuffer(raw, dtype=dtype, count=n * ncomp, offset=mm.end())
+    return data.astype(float) if ncomp == 1 else \
+        data.reshape(n, ncomp).astype(float)
+
+
 def read_internal_field(path):
-    """internalField of an ascii field file: shape (n,) or (n, 3)."""
-    with open(path, 'r', errors='replace') as f:
-        text = _strip_comments(f.read())
+    """internalField of a field file (ascii or binary): shape (n,) or
+    (n, ncomp)."""
+    with open(path, 'rb') as f:
+        raw = f.read()
+    header = raw[:raw.find(b'internalField')] if b'internalField' in raw \
+        else raw[:2000]
+    if re.search(rb'format\s+binary', header):
+        return _read_binary(raw, path)
+    text = _strip_comments(raw.decode('utf-8', errors='replace'))
     m = re.search(r'\binternalField\s+', text)
     if not m:
         raise ValueError('%s: no internalField' % path)
@@ -43,8 +71,7 @@ def read_internal_field(path):
         end = body.rfind(')')
     numbers = np.array(body[:end].replace('(', ' ').replace(')', ' ').split(),
                        dtype=float)
-    ncomp = {'scalar': 1, 'vector': 3, 'symmTensor': 6, 'tensor': 9,
-             'label': 1}[kind]
+    ncomp = _NCOMP[kind]
     if numbers.size != n * ncomp:
         raise ValueError('%s: expected %d values, read %d'
                          % (path, n * ncomp, numbers.size))

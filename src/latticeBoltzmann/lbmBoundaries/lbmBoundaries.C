@@ -394,12 +394,14 @@ void Foam::lbmBoundaries::fill(scalar* f) const
 void Foam::lbmBoundaries::report(Ostream& os) const
 {
     const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();
-    labelList links(patchLinks_);
+
+    // Processor patches differ between processors: gather the others only
+    labelList links(SubList<label>(patchLinks_, patches.nNonProcessor()));
     Pstream::listCombineGather(links, plusEqOp<label>());
     Pstream::listCombineScatter(links);
 
     os  << "Lattice Boltzmann boundaries" << nl;
-    forAll(patches, patchi)
+    forAll(links, patchi)
     {
         if (patchKinds_[patchi] == NONE)
         {
