@@ -26,7 +26,7 @@ Foam::lbmBoundaries::patchKindNames
     { patchKind::WALL, "bounceBack" },
     { patchKind::MOVINGWALL, "movingWall" },
     { patchKind::SLIP, "specular" },
-    { patchKind::PRESSURE, "antiBounceBack" },
+    { patchKind::PRESSURE, "pressure" },
 });
 
 
@@ -151,8 +151,24 @@ Foam::Pair<Foam::label> Foam::lbmBoundaries::wallFace
     const labelVector& stride = lattice_.stride();
     const labelVector& c = vs_.c()[q];
 
-    // The link leaves x along -c: a face of x on a wall side
+    // The link leaves x along -c: a face of x on a wall side. A diagonal
+    // link at an edge or corner crosses two or three faces: walls take
+    // precedence (bounce-back, then slip) over pressure boundaries, so that
+    // no population enters through a wall next to an inlet
+    auto rank = [this](const label facei)
+    {
+        const label patchi = lattice_.mesh().boundaryMesh().whichPatch(facei);
+        switch (patchKinds_[patchi])
+        {
+            case WALL:
+            case MOVINGWALL: return 0;
+            case SLIP: return 1;
+            default: return 2;
+        }
+    };
+
     const label cellx = nodeCell[x];
+    Pair<label> best(-1, -1);
     for (direction a = 0; a < 3; ++a)
     {
         if (c[a] == 0)
@@ -164,11 +180,19 @@ Foam::Pair<Foam::label> Foam::lbmBoundaries::wallFace
         {
             const label dir = 2*a + (-c[a] > 0 ? 1 : 0);
             const label facei = cellFace[cellx][dir];
-            if (facei >= 0)
+            if
+            (
+                facei >= 0
+             && (best.first() < 0 || rank(facei) < rank(best.first()))
+            )
             {
-                return Pair<label>(facei, a);
+                best = Pair<label>(facei, a);
             }
         }
+    }
+    if (best.first() >= 0)
+    {
+        return best;
     }
 
     // Concave corner: the axis neighbours are fluid, the diagonal is not
@@ -364,8 +388,15 @@ void Foam::lbmBoundaries::fill(scalar* f) const
         return;
     }
 
-    // Anti-bounce-back: velocity of the boundary node from its
-    // post-collision populations
+    // Pressure: non-equilibrium extrapolation (Guo, Zheng & Shi 2002,
+    // Chinese Physics 11, 366) in post-collision form. The wall node w one
+    // spacing beyond x gets the equilibrium at the density extrapolated
+    // linearly through the boundary value half-way, rho_w = 2 rho_b - rho_x,
+    // and the velocity of x, plus the post-collision non-equilibrium part
+    // of x:
+    //     f*_q(w) = f_q^eq(rho_w, u_x) + f*_q(x) - f_q^eq(rho_x, u_x)
+    // Unlike plain anti-bounce-back this keeps the viscous stress at the
+    // boundary, so the pressure is uniform across an inlet of a viscous flow.
     const label nBox = lattice_.nBox();
     const label Q = vs_.Q();
     const List<labelVector>& c = vs_.c();
@@ -384,9 +415,9 @@ void Foam::lbmBoundaries::fill(scalar* f) const
         const vector u = j/rho;
         const label q = abbDir_[i];
         const scalar cu = vector(c[q]) & u;
-        f[abbGhost_[i]] =
-            -f[abbSource_[i]]
-          + 2.0*w[q]*abbRho_[i]*(1.0 + 4.5*cu*cu - 1.5*magSqr(u));
+        const scalar shape = w[q]*(1.0 + 3.0*cu + 4.5*cu*cu - 1.5*magSqr(u));
+        const scalar rhoWall = 2.0*abbRho_[i] - rho;
+        f[abbGhost_[i]] = f[q*nBox + x] + (rhoWall - rho)*shape;
     }
 }
 
