@@ -205,14 +205,15 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
             continue;
         }
 
+        const word where =
+            Pstream::parRun()
+          ? word(" on processor " + Foam::name(Pstream::myProcNo()), false)
+          : word::null;
         FatalErrorInFunction
             << "The lattice Boltzmann water became unstable at time "
             << mesh_.time().timeName() << " s (step " << nSteps_ << ")"
             << nl << "    cell " << celli << " at "
-            << mesh_.cellCentres()[celli]
-            << (Pstream::parRun()
-                ? " on processor " + Foam::name(Pstream::myProcNo())
-                : std::string())
+            << mesh_.cellCentres()[celli] << where.c_str()
             << nl << "    lattice density " << rho << ", lattice velocity "
             << u << ", Mach " << mag(u)/std::sqrt(lattice::cs2)
             << " (limit machLimit " << machLimit_ << ")" << nl
