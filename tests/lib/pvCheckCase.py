@@ -13,7 +13,8 @@
 #             [--time latest|T] [--field NAME:MIN:MAX ...] \
 #             [--cloud NAME:N | --cloud NAME:NMIN:NMAX ...] \
 #             [--cloud-field CLOUD:NAME:MIN:MAX ...] [--decomposed] \
-#             [--png FILE [--resolution WxH] [--colour-by NAME]]
+#             [--png FILE [--resolution WxH] [--colour-by NAME]
+#              [--slice x|y|z]]
 #
 #     It opens DIR/case.foam (made empty if missing), goes to the requested
 #     time (default: the latest one, the 0 directory included) and checks:
@@ -136,6 +137,9 @@ def parseArgs(argv):
     p.add_argument('--decomposed', action='store_true',
                    help='read the processor* directories instead')
     p.add_argument('--png', help='render the result to this PNG file')
+    p.add_argument('--slice', choices=['x', 'y', 'z'],
+                   help='render a slice through the centre of the mesh, '
+                        'normal to this axis (for 3D cases)')
     p.add_argument('--resolution', type=resolutionSpec, default=[800, 600],
                    metavar='WxH', help='PNG size (default 800x600)')
     p.add_argument('--colour-by', '--color-by', dest='colourBy',
@@ -264,8 +268,30 @@ def render(args, reader, time, blocks, clouds, colourField):
     view.Background = [1.0, 1.0, 1.0]
     black = [0.0, 0.0, 0.0]
 
-    # The internal mesh, coloured by the field
+    # Bounds of the internal mesh
+    bounds = None
+    for ds in asList(blocks.get('/internalMesh')):
+        b = ds.GetBounds()
+        if bounds is None:
+            bounds = list(b)
+        else:
+            bounds = [min(bounds[0], b[0]), max(bounds[1], b[1]),
+                      min(bounds[2], b[2]), max(bounds[3], b[3]),
+                      min(bounds[4], b[4]), max(bounds[5], b[5])]
+
+    # The internal mesh (or a slice through its centre), coloured by the
+    # field
     mesh = pv.ExtractBlock(Input=reader, Selectors=['/Root/internalMesh'])
+    sliceAxis = None
+    if getattr(args, 'slice', None) and bounds:
+        sliceAxis = 'xyz'.index(args.slice)
+        normal = [0.0, 0.0, 0.0]
+        normal[sliceAxis] = 1.0
+        mesh = pv.Slice(Input=mesh)
+        mesh.SliceType = 'Plane'
+        mesh.SliceType.Origin = [(bounds[2*i] + bounds[2*i + 1])/2
+                                 for i in range(3)]
+        mesh.SliceType.Normal = normal
     meshDisplay = pv.Show(mesh, view)
     meshDisplay.Representation = 'Surface'
     if colourField:
@@ -291,16 +317,8 @@ def render(args, reader, time, blocks, clouds, colourField):
         meshDisplay.ColorArrayName = ['POINTS', '']
         meshDisplay.AmbientColor = meshDisplay.DiffuseColor = [0.8, 0.8, 0.8]
 
-    # Camera: along the thin direction of a 2D-like mesh, else isometric
-    bounds = None
-    for ds in asList(blocks.get('/internalMesh')):
-        b = ds.GetBounds()
-        if bounds is None:
-            bounds = list(b)
-        else:
-            bounds = [min(bounds[0], b[0]), max(bounds[1], b[1]),
-                      min(bounds[2], b[2]), max(bounds[3], b[3]),
-                      min(bounds[4], b[4]), max(bounds[5], b[5])]
+    # Camera: along the thin direction of a 2D-like mesh (or the slice
+    # normal), else isometric
     flat = False
     if bounds:
         size = [bounds[1] - bounds[0], bounds[3] - bounds[2],
@@ -308,6 +326,8 @@ def render(args, reader, time, blocks, clouds, colourField):
         centre = [(bounds[2*i] + bounds[2*i + 1])/2 for i in range(3)]
         thin = min(range(3), key=lambda i: size[i])
         flat = size[thin] < 0.05 * max(size)
+        if sliceAxis is not None:
+            thin, flat = sliceAxis, True
         if flat:
             direction = [0.0, 0.0, 0.0]
             direction[thin] = 1.0
