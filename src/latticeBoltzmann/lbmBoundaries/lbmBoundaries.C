@@ -308,17 +308,35 @@ Foam::lbmBoundaries::lbmBoundaries
                 }
                 case SLIP:
                 {
-                    const direction a = fa.second();
+                    // Mirror the link in every axis along which it leaves
+                    // the domain (one at a face, two at an edge, three at
+                    // a corner): the population arriving at x left node
+                    // y = x - c_tangential in the mirrored direction
                     labelVector mirror(c[q]);
-                    mirror[a] = -mirror[a];
                     labelVector tangential(c[q]);
-                    tangential[a] = 0;
+                    for (direction a = 0; a < 3; ++a)
+                    {
+                        if
+                        (
+                            c[q][a] != 0
+                         && kind[x - c[q][a]*stride[a]] == latticeMesh::WALL
+                        )
+                        {
+                            mirror[a] = -mirror[a];
+                            tangential[a] = 0;
+                        }
+                    }
+                    if (tangential == c[q])
+                    {
+                        // Concave corner: only the diagonal node is a wall
+                        mirror[fa.second()] = -mirror[fa.second()];
+                        tangential[fa.second()] = 0;
+                    }
                     const label qm = vs_.direction(mirror);
                     const label y = x - offsetOf(tangential);
                     if
                     (
-                        tangential != labelVector::zero
-                     && qm > 0
+                        qm > 0
                      && (
                             kind[y] == latticeMesh::OWNED
                          || kind[y] == latticeMesh::HALO
@@ -330,7 +348,7 @@ Foam::lbmBoundaries::lbmBoundaries
                         copyValue.append(0);
                         break;
                     }
-                    // Normal link, or a corner: bounce back
+                    // No such node (a corner of missing cells): bounce back
                     copyGhost.append(ghost);
                     copySource.append(opp[q]*nBox + x);
                     copyValue.append(0);
