@@ -306,6 +306,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         dimensionedScalar("rho", dimDensity, units_.rho0())
     ),
     AisCurrent_(true),
+    halo_(lattice.halo()),
     mass0_(0),
     nSteps_(0)
 {
@@ -388,6 +389,41 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
             << endl;
     }
 
+    // The halo exchange sends, from each neighbour, only the directions
+    // that the pull from some owned node reads: q such that h + c_q is
+    // owned, for the halo nodes h of that neighbour (5 of 19 across a face)
+    {
+        const labelListList& recvNodes = halo_.recvNodes();
+        const List<unsigned char>& kind = lattice_.kind();
+        const label nBox = lattice_.nBox();
+        labelListList needed(recvNodes.size());
+        forAll(recvNodes, proci)
+        {
+            boolList use(Q, false);
+            for (const label h : recvNodes[proci])
+            {
+                for (label q = 0; q < Q; ++q)
+                {
+                    const label x = h + offset_[q];
+                    if (x >= 0 && x < nBox && kind[x] == latticeMesh::OWNED)
+                    {
+                        use[q] = true;
+                    }
+                }
+            }
+            DynamicList<label> comps;
+            forAll(use, q)
+            {
+                if (use[q])
+                {
+                    comps.append(q);
+                }
+            }
+            needed[proci].transfer(comps);
+        }
+        halo_.setComponents(needed);
+    }
+
     boundaries_.reset
     (
         new lbmBoundaries(lattice_, velocitySet_(), units_, U_, p_)
@@ -415,11 +451,10 @@ void Foam::latticeBoltzmannFluid::enableForceField()
 
 void Foam::latticeBoltzmannFluid::step()
 {
-    const label Q = velocitySet_->Q();
     const label nBox = lattice_.nBox();
 
     scalarList& f = current();
-    lattice_.halo().exchange(f.data(), Q, nBox);
+    halo_.exchangeSelected(f.data(), nBox);
     boundaries_->fill(f.data());
 
     lbmKernelArgs a;

@@ -206,6 +206,112 @@ void Foam::haloExchange::exchange
 }
 
 
+void Foam::haloExchange::setComponents(const labelListList& recvComponents)
+{
+    const label myProc = Pstream::myProcNo();
+    recvComponents_ = recvComponents;
+    sendComponents_.setSize(Pstream::nProcs());
+    sendComponents_[myProc] = recvComponents_[myProc];
+
+    if (Pstream::parRun())
+    {
+        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+        forAll(recvComponents_, proci)
+        {
+            if (proci != myProc)
+            {
+                UOPstream toProc(proci, pBufs);
+                toProc << recvComponents_[proci];
+            }
+        }
+        pBufs.finishedSends();
+        forAll(sendComponents_, proci)
+        {
+            if (proci != myProc)
+            {
+                UIPstream fromProc(proci, pBufs);
+                fromProc >> sendComponents_[proci];
+            }
+        }
+    }
+}
+
+
+void Foam::haloExchange::exchangeSelected
+(
+    scalar* data,
+    const label componentStride
+) const
+{
+    const label myProc = Pstream::myProcNo();
+
+    // Periodic copies within this processor
+    {
+        const labelList& send = sendNodes_[myProc];
+        const labelList& recv = recvNodes_[myProc];
+        for (const label c : recvComponents_[myProc])
+        {
+            scalar* __restrict__ d = data + c*componentStride;
+            forAll(send, i)
+            {
+                d[recv[i]] = d[send[i]];
+            }
+        }
+    }
+
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(sendNodes_, proci)
+    {
+        const labelList& send = sendNodes_[proci];
+        const labelList& comps = sendComponents_[proci];
+        if (proci == myProc || send.empty() || comps.empty())
+        {
+            continue;
+        }
+        scalarList buf(comps.size()*send.size());
+        label k = 0;
+        for (const label c : comps)
+        {
+            const scalar* d = data + c*componentStride;
+            forAll(send, i)
+            {
+                buf[k++] = d[send[i]];
+            }
+        }
+        UOPstream toProc(proci, pBufs);
+        toProc << buf;
+    }
+    pBufs.finishedSends();
+
+    forAll(recvNodes_, proci)
+    {
+        const labelList& recv = recvNodes_[proci];
+        const labelList& comps = recvComponents_[proci];
+        if (proci == myProc || recv.empty() || comps.empty())
+        {
+            continue;
+        }
+        scalarList buf;
+        UIPstream fromProc(proci, pBufs);
+        fromProc >> buf;
+        label k = 0;
+        for (const label c : comps)
+        {
+            scalar* d = data + c*componentStride;
+            forAll(recv, i)
+            {
+                d[recv[i]] = buf[k++];
+            }
+        }
+    }
+}
+
+
 void Foam::haloExchange::exchange(labelUList& data) const
 {
     const label myProc = Pstream::myProcNo();

@@ -200,7 +200,8 @@ static scalarList collideOne
     const velocitySet& vs,
     const scalarList& f,
     const vector& F,
-    const scalar omega
+    const scalar omega,
+    const scalar smagorinsky = 0
 )
 {
     const label Q = vs.Q();
@@ -220,6 +221,7 @@ static scalarList collideOne
     a.Fy = Fy.cdata();
     a.Fz = Fz.cdata();
     a.omega = omega;
+    a.smagorinsky = smagorinsky;
     lbmKernelStats stats;
     model.streamCollide(a, stats);
     return fNew;
@@ -296,6 +298,70 @@ static void testCollision
 }
 
 
+// Smagorinsky sub-grid model on BGK: conserves, leaves equilibrium alone,
+// and relaxes the second moment at the Hou et al. (1996) rate
+static void testSmagorinsky(const velocitySet& vs)
+{
+    dictionary dict;
+    dict.add("collisionModel", "BGK");
+    autoPtr<collisionModel> model = collisionModel::New(dict, vs);
+    const word n = "BGK + Smagorinsky " + vs.type();
+    const label Q = vs.Q();
+    const label D = vs.D();
+    const scalar tau = 0.52, Cs = 0.17;
+
+    Random rnd(5);
+    scalar eMass = 0, eMom = 0, eFixed = 0, eStress = 0, tauEffMax = 0;
+    for (label trial = 0; trial < 20; ++trial)
+    {
+        const scalar rho = 0.95 + 0.1*rnd.sample01<scalar>();
+        vector u = 0.05*(2*rnd.sample01<vector>() - vector::one);
+        vector F = 1e-4*(2*rnd.sample01<vector>() - vector::one);
+        if (D == 2) { u.z() = 0; F.z() = 0; }
+        const scalarList feq = equilibrium(vs, rho, u);
+        {
+            const scalarList fs =
+                collideOne(model(), vs, feq, Zero, 1.0/tau, Cs);
+            for (label q = 0; q < Q; ++q)
+            {
+                eFixed = max(eFixed, mag(fs[q] - feq[q]));
+            }
+        }
+        scalarList f(feq);
+        for (label q = 0; q < Q; ++q)
+        {
+            f[q] *= 1 + 0.02*(2*rnd.sample01<scalar>() - 1);
+        }
+        const moments m0 = computeMoments(vs, f);
+        const scalarList fs = collideOne(model(), vs, f, F, 1.0/tau, Cs);
+        const moments m1 = computeMoments(vs, fs);
+        eMass = max(eMass, mag(m1.rho - m0.rho));
+        eMom = max(eMom, mag(m1.j - (m0.j + F)));
+
+        // Hou et al.: tau_eff = (tau + sqrt(tau^2 + 18 sqrt(2) Cs^2 |Pi|/rho))/2
+        const vector uG = (m0.j + 0.5*F)/m0.rho;
+        const moments meq = computeMoments(vs, equilibrium(vs, m0.rho, uG));
+        const symmTensor Pi = m0.P - meq.P + symm(uG*F);
+        const scalar magPi = std::sqrt(Pi && Pi);
+        const scalar tauEff = 0.5*
+        (
+            tau + std::sqrt(tau*tau + 18*std::sqrt(2.0)*Cs*Cs*magPi/m0.rho)
+        );
+        tauEffMax = max(tauEffMax, tauEff);
+        const scalar w = 1.0/tauEff;
+        const symmTensor Pexp =
+            m0.P - w*(m0.P - meq.P) + (1 - 0.5*w)*symm(2*(uG*F));
+        eStress = max(eStress, mag(m1.P - Pexp));
+    }
+    check(eMass < 1e-14, n + " conserves mass", eMass);
+    check(eMom < 1e-14, n + " momentum gains exactly F", eMom);
+    check(eFixed < 1e-14, n + " equilibrium is a fixed point", eFixed);
+    check(eStress < 1e-13 && tauEffMax > tau + 1e-3,
+        n + " relaxes at the Hou et al. eddy-viscosity rate (largest tau_eff "
+      + Foam::name(tauEffMax) + ")", eStress);
+}
+
+
 int main(int argc, char *argv[])
 {
     const wordList sets({"D2Q9", "D3Q19", "D3Q27"});
@@ -311,6 +377,7 @@ int main(int argc, char *argv[])
             testCollision(m, vs());
         }
         testCollision("regularized", vs(), true);
+        testSmagorinsky(vs());
 
         // MRT basis orthonormal under the weights
         dictionary dict;
