@@ -130,3 +130,44 @@ def check(ok, what, value=None):
     suffix = '' if value is None else ' (%s)' % value
     print('%s: %s%s' % ('PASS' if ok else 'FAIL', what, suffix))
     return ok
+
+
+_CLASS_NCOMP = {'scalarField': 1, 'vectorField': 3, 'symmTensorField': 6,
+                'tensorField': 9, 'labelField': 1}
+
+
+def read_list(path):
+    """A lagrangian field file (IOField: scalarField, vectorField,
+    symmTensorField, tensorField, labelField), ascii or binary: shape (n,)
+    or (n, ncomp)."""
+    with open(path, 'rb') as f:
+        raw = f.read()
+    head_end = raw.find(b'}')
+    header = raw[:head_end]
+    cls = re.search(rb'class\s+(\w+)\s*;', header).group(1).decode()
+    ncomp = _CLASS_NCOMP[cls]
+    binary = re.search(rb'format\s+binary', header) is not None
+    body = raw[head_end + 1:]
+    # Skip comment lines after the header
+    m = re.search(rb'(\d+)\s*\(', body)
+    if not m:
+        # uniform list "N{value}"
+        mm = re.search(rb'(\d+)\s*\{([^}]*)\}', body)
+        n = int(mm.group(1))
+        vals = np.array(mm.group(2).decode().strip('()').split(), dtype=float)
+        return np.tile(vals, (n, 1)) if ncomp > 1 else np.full(n, vals[0])
+    n = int(m.group(1))
+    if binary:
+        dtype = np.int32 if cls == 'labelField' else np.float64
+        data = np.frombuffer(body, dtype=dtype, count=n * ncomp,
+                             offset=m.end()).astype(float)
+    else:
+        text = _strip_comments(body[m.end():].decode())
+        end = text.rfind(')')
+        data = np.array(text[:end].replace('(', ' ').replace(')', ' ').split(),
+                        dtype=float)
+    return data if ncomp == 1 else data.reshape(n, ncomp)
+
+
+def read_cloud(case, time, field, cloud='materialPoints'):
+    return read_list(os.path.join(case, str(time), 'lagrangian', cloud, field))

@@ -80,13 +80,13 @@ void Foam::physicsScene::progress()
         scalar updates = 0;
         forAll(effects_, i)
         {
-            updates += effects_[i].updatesPerStep();
+            updates += effects_[i].updatesDone();
         }
         Info<< "Time = " << runTime.timeName() << " s  step " << nSteps_
             << "/" << nStepsTotal_ << " ("
             << label(100.0*nSteps_/max(nStepsTotal_, label(1))) << "%)"
             << "  wall " << label(wall) << " s  ETA " << label(eta + 0.5)
-            << " s  " << updates*nSteps_/max(wall, VSMALL)/1e6
+            << " s  " << updates/max(wall, VSMALL)/1e6
             << " M updates/s";
         forAll(effects_, i)
         {
@@ -144,6 +144,10 @@ Foam::physicsScene::physicsScene(fvMesh& mesh)
     }
 
     Info<< "Scene effects: " << names_ << nl << endl;
+
+    // The soil's shape functions reach up to 2 nodes beyond a point's cell
+    // (cubic B-splines): the shared lattice is built wide enough for both
+    lattice(has("soil") ? 2 : 1);
 
     effects_.setSize(names_.size());
     forAll(names_, i)
@@ -233,7 +237,7 @@ void Foam::physicsScene::summary() const
     scalar updates = 0;
     forAll(effects_, i)
     {
-        updates += effects_[i].updatesPerStep();
+        updates += effects_[i].updatesDone();
     }
 
     Info<< nl << "Run cost" << nl
@@ -241,7 +245,7 @@ void Foam::physicsScene::summary() const
         << "    wall time    " << wall << " s" << nl;
     if (nSteps_ && wall > 0)
     {
-        Info<< "    throughput   " << updates*nSteps_/wall/1e6
+        Info<< "    throughput   " << updates/wall/1e6
             << " M updates/s over all effects" << nl;
     }
     forAll(effects_, i)
@@ -249,9 +253,9 @@ void Foam::physicsScene::summary() const
         const scalar t = effectTime_[i];
         Info<< "    " << names_[i] << ": " << t << " s ("
             << label(100*t/max(wall, VSMALL) + 0.5) << "%)";
-        if (t > 0 && effects_[i].updatesPerStep() > 0)
+        if (t > 0 && effects_[i].updatesDone() > 0)
         {
-            Info<< ", " << effects_[i].updatesPerStep()*nSteps_/t/1e6
+            Info<< ", " << effects_[i].updatesDone()/t/1e6
                 << " M " << effects_[i].updateUnit() << " updates/s";
         }
         Info<< nl;

@@ -51,6 +51,12 @@ Foam::scalar Foam::physicsEffects::fluid::updatesPerStep() const
 }
 
 
+Foam::scalar Foam::physicsEffects::fluid::updatesDone() const
+{
+    return scalar(lbm_.nNodes())*lbm_.nSteps();
+}
+
+
 Foam::scalar Foam::physicsEffects::fluid::memoryBytes() const
 {
     return lbm_.memoryBytes();

@@ -1,0 +1,339 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+Application
+    setMaterialPoints
+
+Group
+    grpPreProcessingUtilities
+
+Description
+    Seeds the material points of the soil from regions given in
+    system/setMaterialPointsDict, and writes them as the cloud
+    <startTime>/lagrangian/materialPoints.
+
+    Each region is a closed searchable surface of OpenFOAM (searchableBox,
+    searchableCylinder, searchableSphere, triSurfaceMesh from an STL file in
+    constant/triSurface, ...). Every cell of the lattice gets n points per
+    direction at the centres of its n^D sub-cells; a point takes the first
+    region (in the order given) that contains it. The cell of a point comes
+    from the lattice directly (no search), so a million points take seconds.
+
+    \verbatim
+        pointsPerCell   2;                      // per direction
+        regions
+        (
+            column
+            {
+                type        searchableBox;      // any closed searchable surface
+                min         (0 0 -1);
+                max         (20 10 1);
+                material    sand;               // from constant/soilProperties
+                velocity    (0 0 0);            // [m/s] (default 0)
+                porosity    0.37;               // void fraction n (default 0)
+                stress      geostatic;          // none (default) | geostatic
+                geostaticCoeffs
+                {
+                    surface     10;             // [m] height of the free
+                                                // surface along -gravity
+                    K0          0.5;            // horizontal/vertical stress
+                }
+            }
+        );
+    \endverbatim
+
+    Geostatic stress (compression negative): vertical effective stress
+    sigma_v = rho |g| (h - surface) at height h below the surface along
+    -gravity (gravity from constant/soilProperties), horizontal
+    K0 sigma_v.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "latticeMesh.H"
+#include "materialPoints.H"
+#include "searchableSurface.H"
+#include "volumeType.H"
+#include "Enum.H"
+#include <chrono>
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Seed the material points of the soil from the regions of"
+        " system/setMaterialPointsDict"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const auto start = std::chrono::steady_clock::now();
+
+    IOdictionary dict
+    (
+        IOobject
+        (
+            "setMaterialPointsDict",
+            runTime.system(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+    IOdictionary soilDict
+    (
+        IOobject
+        (
+            "soilProperties",
+            runTime.constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+
+    const latticeMesh lattice(mesh, 1);
+    lattice.report(Info);
+
+    const label n = dict.get<label>("pointsPerCell");
+    if (n < 1 || n > 8)
+    {
+        FatalIOErrorInFunction(dict)
+            << "pointsPerCell " << n << " is not allowed: it must lie in"
+            << " [1, 8] (points per cell and direction)" << exit(FatalIOError);
+    }
+
+    const dictionary& materialsDict = soilDict.subDict("materials");
+    const wordList materialNames(materialsDict.toc());
+    const vector gravity = soilDict.getOrDefault<vector>("gravity", Zero);
+
+    // The regions
+    const PtrList<entry> regionEntries(dict.lookup("regions"));
+    const label nRegions = regionEntries.size();
+    if (!nRegions)
+    {
+        FatalIOErrorInFunction(dict)
+            << "regions is empty: give at least one region" << exit(FatalIOError);
+    }
+
+    enum class stressType { none, geostatic };
+    const Enum<stressType> stressTypeNames
+    ({
+        { stressType::none, "none" },
+        { stressType::geostatic, "geostatic" },
+    });
+
+    PtrList<searchableSurface> surfaces(nRegions);
+    labelList regionMaterial(nRegions);
+    List<vector> regionVelocity(nRegions);
+    scalarList regionPorosity(nRegions);
+    scalarList regionRho(nRegions);
+    List<stressType> regionStress(nRegions);
+    scalarList regionSurface(nRegions, 0.0);
+    scalarList regionK0(nRegions, 1.0);
+
+    forAll(regionEntries, r)
+    {
+        const dictionary& rd = regionEntries[r].dict();
+        const word& name = regionEntries[r].keyword();
+        surfaces.set
+        (
+            r,
+            searchableSurface::New
+            (
+                rd.get<word>("type"),
+                IOobject
+                (
+                    name,
+                    runTime.constant(),
+                    "triSurface",
+                    runTime,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE
+                ),
+                rd
+            )
+        );
+        if (!surfaces[r].hasVolumeType())
+        {
+            FatalIOErrorInFunction(rd)
+                << "Region " << name << ": surface type " << rd.get<word>("type")
+                << " does not enclose a volume. Use a closed surface"
+                << " (searchableBox, searchableCylinder, searchableSphere, a"
+                << " closed triSurfaceMesh)" << exit(FatalIOError);
+        }
+
+        const word mat = rd.get<word>("material");
+        regionMaterial[r] = materialNames.find(mat);
+        if (regionMaterial[r] < 0)
+        {
+            FatalIOErrorInFunction(rd)
+                << "Region " << name << ": material " << mat << " is not in"
+                << " constant/soilProperties materials " << materialNames
+                << exit(FatalIOError);
+        }
+        regionRho[r] = materialsDict.subDict(mat).get<scalar>("rho");
+        regionVelocity[r] = rd.getOrDefault<vector>("velocity", Zero);
+        regionPorosity[r] = rd.getOrDefault<scalar>("porosity", 0);
+        if (!(regionPorosity[r] >= 0 && regionPorosity[r] < 1))
+        {
+            FatalIOErrorInFunction(rd)
+                << "Region " << name << ": porosity " << regionPorosity[r]
+                << " is not allowed: the void fraction must lie in [0, 1)"
+                << exit(FatalIOError);
+        }
+        regionStress[r] =
+            stressTypeNames.getOrDefault("stress", rd, stressType::none);
+        if (regionStress[r] == stressType::geostatic)
+        {
+            const dictionary& gd = rd.subDict("geostaticCoeffs");
+            regionSurface[r] = gd.get<scalar>("surface");
+            regionK0[r] = gd.get<scalar>("K0");
+            if (!(regionK0[r] >= 0))
+            {
+                FatalIOErrorInFunction(gd)
+                    << "K0 " << regionK0[r] << " is not allowed: it must be"
+                    << " >= 0" << exit(FatalIOError);
+            }
+            if (mag(gravity) < SMALL)
+            {
+                FatalIOErrorInFunction(rd)
+                    << "Region " << name << ": geostatic stress needs gravity"
+                    << " in constant/soilProperties" << exit(FatalIOError);
+            }
+        }
+    }
+
+    // Candidate points: the centres of the n^D sub-cells of every cell
+    const label nDim = lattice.nDim();
+    const label perCell = (nDim == 2 ? n*n : n*n*n);
+    const scalar dx = lattice.dx();
+    const vectorField& C = mesh.cellCentres();
+    pointField candidates(mesh.nCells()*perCell);
+    {
+        label i = 0;
+        forAll(C, celli)
+        {
+            for (label c = 0; c < (nDim == 2 ? 1 : n); ++c)
+            for (label b = 0; b < n; ++b)
+            for (label a = 0; a < n; ++a)
+            {
+                candidates[i++] = C[celli] + dx*vector
+                (
+                    (a + 0.5)/n - 0.5,
+                    (b + 0.5)/n - 0.5,
+                    nDim == 2 ? 0 : (c + 0.5)/n - 0.5
+                );
+            }
+        }
+    }
+
+    // First region containing each point
+    labelList region(candidates.size(), -1);
+    labelList regionCount(nRegions, 0);
+    forAll(surfaces, r)
+    {
+        List<volumeType> vt;
+        surfaces[r].getVolumeType(candidates, vt);
+        forAll(vt, i)
+        {
+            if (region[i] < 0 && vt[i] == volumeType::INSIDE)
+            {
+                region[i] = r;
+                ++regionCount[r];
+            }
+        }
+    }
+
+    forAll(regionCount, r)
+    {
+        if (returnReduce(regionCount[r], sumOp<label>()) == 0)
+        {
+            FatalIOErrorInFunction(regionEntries[r].dict())
+                << "Region " << regionEntries[r].keyword() << " contains no"
+                << " point of the mesh: it lies outside the mesh (bounding box "
+                << boundBox(mesh.points(), true) << ") or is smaller than a"
+                << " sub-cell of size " << dx/n << exit(FatalIOError);
+        }
+    }
+
+    // The points
+    materialPoints points;
+    label nPoints = 0;
+    forAll(region, i)
+    {
+        if (region[i] >= 0) ++nPoints;
+    }
+    points.setSize(nPoints);
+    const scalar Vp = lattice.cellVolume()/perCell;
+    const vector halfSize(0.5/n, 0.5/n, nDim == 2 ? 0.5 : 0.5/n);
+    const vector up = mag(gravity) > SMALL ? -gravity/mag(gravity) : vector(0, 1, 0);
+    label k = 0;
+    forAll(region, i)
+    {
+        const label r = region[i];
+        if (r < 0)
+        {
+            continue;
+        }
+        symmTensor stress(Zero);
+        if (regionStress[r] == stressType::geostatic)
+        {
+            const scalar h = candidates[i] & up;
+            const scalar sv = regionRho[r]*mag(gravity)*min(h - regionSurface[r], 0.0);
+            const symmTensor vv = sqr(up);
+            stress = sv*vv + regionK0[r]*sv*(symmTensor::I - vv);
+        }
+        points.x[k] = candidates[i];
+        points.v[k] = regionVelocity[r];
+        points.m[k] = regionRho[r]*Vp;
+        points.V[k] = Vp;
+        points.V0[k] = Vp;
+        points.F[k] = tensor::I;
+        points.sigma[k] = stress;
+        points.plasticStrain[k] = 0;
+        points.C[k] = Zero;
+        points.material[k] = regionMaterial[r];
+        points.halfLength[k] = halfSize;
+        points.porosity[k] = regionPorosity[r];
+        ++k;
+    }
+
+    points.write(mesh, lattice);
+
+    const scalar seconds = std::chrono::duration<scalar>
+    (
+        std::chrono::steady_clock::now() - start
+    ).count();
+
+    Info<< "Material points" << nl;
+    forAll(regionEntries, r)
+    {
+        Info<< "    " << regionEntries[r].keyword() << ": "
+            << returnReduce(regionCount[r], sumOp<label>()) << " points of "
+            << materialNames[regionMaterial[r]] << nl;
+    }
+    Info<< "    total " << returnReduce(nPoints, sumOp<label>()) << " points ("
+        << n << " per cell and direction), "
+        << materialPoints::memoryPerPoint() << " bytes per point" << nl
+        << "    written to " << runTime.timeName() << "/lagrangian/"
+        << materialPoints::cloudName << " in " << seconds << " s" << nl
+        << nl << "End" << nl << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,560 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+// Eigen before the OpenFOAM headers (macro hygiene)
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "MohrCoulomb.H"
+#include "addToRunTimeSelectionTable.H"
+#include "unitConversion.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace constitutiveModels
+{
+    defineTypeNameAndDebug(MohrCoulomb, 0);
+    addToRunTimeSelectionTable(constitutiveModel, MohrCoulomb, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::constitutiveModels::MohrCoulomb::MohrCoulomb
+(
+    const word& name,
+    const dictionary& dict
+)
+:
+    constitutiveModel(typeName, name, dict),
+    cohesion_(0),
+    phi_(0),
+    psi_(0),
+    k_(1),
+    m_(1),
+    sigmaC_(0),
+    hasApex_(false),
+    sigmaApex_(GREAT),
+    sigmaT_(GREAT),
+    tensionActive_(false)
+{
+    readFrictionalStrength(cohesion_, phi_, psi_);
+
+    const scalar sinPhi = sin(phi_);
+    const scalar sinPsi = sin(psi_);
+
+    // k - 1 = 2 sin(phi)/(1 - sin(phi)) without cancellation at small phi
+    k_ = 1 + 2*sinPhi/(1 - sinPhi);
+    m_ = 1 + 2*sinPsi/(1 - sinPsi);
+    sigmaC_ = 2*cohesion_*sqrt(k_);
+
+    hasApex_ = (phi_ > 0);
+    sigmaApex_ = hasApex_ ? cohesion_*cos(phi_)/sinPhi : GREAT;
+
+    // Tension cut-off
+    sigmaT_ = sigmaApex_;
+    if (coeffs_.found("tensionCutoff"))
+    {
+        const scalar sigmaT = coeffs_.get<scalar>("tensionCutoff");
+        if (!(sigmaT >= 0))
+        {
+            notAllowed
+            (
+                coeffs_, "tensionCutoff", sigmaT,
+                "the tension cut-off must be >= 0 [Pa]"
+                " (0: no tensile principal stress)"
+            );
+        }
+        if (sigmaT > sigmaApex_)
+        {
+            IOWarningInFunction(coeffs_)
+                << "tensionCutoff " << sigmaT << " lies above the apex"
+                << " c cot(phi) = " << sigmaApex_ << " of material "
+                << name_ << ": it has no effect" << endl;
+        }
+        else
+        {
+            sigmaT_ = sigmaT;
+        }
+    }
+    tensionActive_ = (sigmaT_ < sigmaApex_);
+
+
+    // Constants of the principal-space return (Clausen et al. 2007)
+
+    // Planes a.sigma <= c with flow directions b: the Mohr-Coulomb plane of
+    // the sorted sector and the planes of the two neighbouring sectors that
+    // meet it along line 1 and line 2, then the Rankine planes
+    const vector b[6] =
+    {
+        vector(m_, 0, -1),
+        vector(0, m_, -1),
+        vector(m_, -1, 0),
+        vector(1, 0, 0),
+        vector(0, 1, 0),
+        vector(0, 0, 1)
+    };
+    a_[0] = vector(k_, 0, -1);
+    a_[1] = vector(0, k_, -1);
+    a_[2] = vector(k_, -1, 0);
+    a_[3] = b[3];
+    a_[4] = b[4];
+    a_[5] = b[5];
+    for (label i = 0; i < 6; ++i)
+    {
+        Db_[i] = D(b[i]);
+        c_[i] = (i < 3 ? sigmaC_ : sigmaT_);
+    }
+
+    rp_ = Db_[0]/(a_[0] & Db_[0]);
+    const vector rp2(Db_[1]/(a_[1] & Db_[1]));
+    const vector rp3(Db_[2]/(a_[2] & Db_[2]));
+
+    r1_ = vector(1, 1, k_);
+    r2_ = vector(1, k_, k_);
+
+    if (hasApex_)
+    {
+        P1_ = sigmaApex_*vector::one;
+        P2_ = P1_;
+    }
+    else
+    {
+        // Tresca: the lines run parallel to the hydrostatic axis and never
+        // meet. A point of each: line 1 (s1 = s2, s1 - s3 = sigma_c) and
+        // line 2 (s2 = s3, s1 - s3 = sigma_c)
+        P1_ = vector(0, 0, -sigmaC_);
+        P2_ = vector(sigmaC_, 0, 0);
+    }
+
+    // Keep the order of the cross products (fixes the signs of the tests)
+    nI_ = rp_ ^ r1_;
+    nII_ = rp_ ^ r2_;
+    N2_ = rp_ ^ rp2;
+    N3_ = rp_ ^ rp3;
+    N2r1_ = N2_ & r1_;
+    N3r2_ = N3_ & r2_;
+
+    if (!(mag(N2r1_) > SMALL*mag(N2_)*mag(r1_)))
+    {
+        FatalErrorInFunction
+            << "Degenerate line return for material " << name_
+            << " (k = " << k_ << ", m = " << m_ << ")" << abort(FatalError);
+    }
+    if (!(mag(N3r2_) > SMALL*mag(N3_)*mag(r2_)))
+    {
+        FatalErrorInFunction
+            << "Degenerate line return for material " << name_
+            << " (k = " << k_ << ", m = " << m_ << ")" << abort(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+namespace
+{
+
+// Solve the n x n system (n <= 3) A x = b by Cramer's rule; false when A is
+// singular relative to the product of its row norms (Hadamard's bound)
+bool solveSmall
+(
+    const int n,
+    const Foam::scalar A[3][3],
+    const Foam::scalar b[3],
+    Foam::scalar x[3]
+)
+{
+    using Foam::scalar;
+
+    scalar M[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    scalar r[3] = {0, 0, 0};
+    scalar bound = 1;
+    for (int i = 0; i < n; ++i)
+    {
+        scalar rowNorm2 = 0;
+        for (int j = 0; j < n; ++j)
+        {
+            M[i][j] = A[i][j];
+            rowNorm2 += A[i][j]*A[i][j];
+        }
+        r[i] = b[i];
+        bound *= std::sqrt(rowNorm2);
+    }
+
+    auto det3 = [](const scalar m[3][3])
+    {
+        return
+            m[0][0]*(m[1][1]*m[2][2] - m[1][2]*m[2][1])
+          - m[0][1]*(m[1][0]*m[2][2] - m[1][2]*m[2][0])
+          + m[0][2]*(m[1][0]*m[2][1] - m[1][1]*m[2][0]);
+    };
+
+    const scalar det = det3(M);
+    if (!(std::abs(det) > 1e-10*bound))
+    {
+        return false;
+    }
+
+    for (int k = 0; k < n; ++k)
+    {
+        scalar Mk[3][3];
+        for (int i = 0; i < 3; ++i)
+        {
+            for (int j = 0; j < 3; ++j)
+            {
+                Mk[i][j] = (j == k) ? r[i] : M[i][j];
+            }
+        }
+        x[k] = det3(Mk)/det;
+    }
+    return true;
+}
+
+} // End anonymous namespace
+
+
+
+Foam::constitutiveModels::MohrCoulomb::returnRegion
+Foam::constitutiveModels::MohrCoulomb::returnMohrCoulomb
+(
+    const vector& sB,
+    vector& sC
+) const
+{
+    // Yield check on the trial stress
+    const scalar fB = yieldFunction(sB);
+    if (fB <= 0)
+    {
+        sC = sB;
+        return elastic;
+    }
+
+    // Clausen et al. (2007), region tests in the order apex, line 1, plane,
+    // line 2. t1, t2: positions along the lines of the line returns
+    // (sigma = P + t r, t > 0 beyond the apex), from the projection of the
+    // trial stress along the two flow directions of each line onto it.
+    const vector s1(sB - P1_);
+
+    if (hasApex_)
+    {
+        const vector& s = s1;  // P1 = P2 = apex
+        const scalar t1 = (N2_ & s)/N2r1_;
+        const scalar t2 = (N3_ & s)/N3r2_;
+        if (t1 > 0 && t2 > 0)
+        {
+            sC = P1_;
+            return apex;
+        }
+    }
+
+    if ((nI_ & s1) < 0)
+    {
+        // Line 1, triaxial compression: s1 = s2
+        const scalar t1 = (N2_ & s1)/N2r1_;
+        sC = P1_ + t1*r1_;
+        return compressionLine;
+    }
+
+    const vector s2(sB - P2_);
+
+    if ((nII_ & s2) <= 0)
+    {
+        sC = sB - fB*rp_;
+        return plane;
+    }
+
+    // Line 2, triaxial extension: s2 = s3
+    const scalar t2 = (N3_ & s2)/N3r2_;
+    sC = P2_ + t2*r2_;
+    return extensionLine;
+}
+
+
+Foam::constitutiveModels::MohrCoulomb::returnRegion
+Foam::constitutiveModels::MohrCoulomb::returnTension
+(
+    const vector& sB,
+    const vector& sMC,
+    vector& sC
+) const
+{
+    // Multi-plane return (Clausen et al. 2006): find the active set A of at
+    // most three planes with
+    //     sC = sB - sum_{j in A} dl_j D b_j,  a_i.sC = c_i (i in A),
+    //     dl_j >= 0, every plane satisfied, s1 >= s2 >= s3.
+    // The Mohr-Coulomb return alone violated the cut-off, so a Rankine plane
+    // is active. Sets with fewer planes are tried first.
+
+    const scalar scale =
+        max
+        (
+            max(mag(sB.x()), max(mag(sB.y()), mag(sB.z()))),
+            max(sigmaC_, sigmaT_)
+        );
+    const scalar tol = 1e-10*scale;
+
+    for (int nActive = 1; nActive <= 3; ++nActive)
+    {
+        for (int set = 1; set < 64; ++set)
+        {
+            // At least one Rankine plane (bits 3-5)
+            if (!(set & 070))
+            {
+                continue;
+            }
+
+            int idx[3];
+            int n = 0;
+            for (int i = 0; i < 6; ++i)
+            {
+                if (set & (1 << i))
+                {
+                    if (n < 3)
+                    {
+                        idx[n] = i;
+                    }
+                    ++n;
+                }
+            }
+            if (n != nActive)
+            {
+                continue;
+            }
+
+            // A dl = f(sB) with A_ij = a_i.D b_j (unsymmetric when psi !=
+            // phi); Cramer's rule, singular sets skipped
+            scalar A[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+            scalar rhs[3] = {0, 0, 0};
+            scalar dl[3] = {0, 0, 0};
+            for (int i = 0; i < n; ++i)
+            {
+                rhs[i] = (a_[idx[i]] & sB) - c_[idx[i]];
+                for (int j = 0; j < n; ++j)
+                {
+                    A[i][j] = a_[idx[i]] & Db_[idx[j]];
+                }
+            }
+            if (!solveSmall(n, A, rhs, dl))
+            {
+                continue;
+            }
+
+            vector s(sB);
+            bool ok = true;
+            for (int j = 0; j < n; ++j)
+            {
+                const vector dS(dl[j]*Db_[idx[j]]);
+                if (dl[j]*mag(Db_[idx[j]]) < -tol)
+                {
+                    ok = false;
+                }
+                s -= dS;
+            }
+            if (!ok || s.x() < s.y() - tol || s.y() < s.z() - tol)
+            {
+                continue;
+            }
+            for (int i = 0; i < 6 && ok; ++i)
+            {
+                ok = ((a_[i] & s) - c_[i] <= tol);
+            }
+            if (ok)
+            {
+                sC = s;
+                return tension;
+            }
+        }
+    }
+
+    // Fallback, not expected: Rankine return (associated) of the admissible
+    // Mohr-Coulomb state. Flowing along D e1 (and D e2) lowers every
+    // Mohr-Coulomb plane function, so the result satisfies both criteria.
+    const scalar Mod = lambda_ + 2*G_;
+    scalar d1 = (sMC.x() - sigmaT_)/Mod;
+    vector s(sigmaT_, sMC.y() - lambda_*d1, sMC.z() - lambda_*d1);
+    if (s.y() > sigmaT_)
+    {
+        const scalar det = sqr(Mod) - sqr(lambda_);
+        d1 = (Mod*(sMC.x() - sigmaT_) - lambda_*(sMC.y() - sigmaT_))/det;
+        const scalar d2 =
+            (Mod*(sMC.y() - sigmaT_) - lambda_*(sMC.x() - sigmaT_))/det;
+        s = vector(sigmaT_, sigmaT_, sMC.z() - lambda_*(d1 + d2));
+        if (s.z() > sigmaT_)
+        {
+            s = sigmaT_*vector::one;
+        }
+    }
+    if (yieldFunction(s) > tol)
+    {
+        s = sigmaT_*vector::one;
+    }
+    sC = s;
+
+    if (debug)
+    {
+        InfoInFunction
+            << "Split return for trial " << sB << " -> " << sC << endl;
+    }
+
+    return tensionSplit;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::constitutiveModels::MohrCoulomb::returnRegion
+Foam::constitutiveModels::MohrCoulomb::principalReturn
+(
+    const vector& sB,
+    vector& sC
+) const
+{
+    const returnRegion region = returnMohrCoulomb(sB, sC);
+
+    if (tensionActive_ && sC.x() > sigmaT_)
+    {
+        const vector sMC(sC);
+        return returnTension(sB, sMC, sC);
+    }
+
+    return region;
+}
+
+
+Foam::constitutiveModels::MohrCoulomb::returnRegion
+Foam::constitutiveModels::MohrCoulomb::update
+(
+    const symmTensor& dStrain,
+    symmTensor& stress,
+    scalar& plasticStrain
+) const
+{
+    const symmTensor trial(stress + elasticIncrement(dStrain));
+
+    // Cheap sufficient elastic test: the principal stresses lie within
+    // p -+ 2 sqrt(J2/3), so with k >= 1
+    //     f <= (k - 1) p + (k + 1) 2 sqrt(J2/3) - sigma_c
+    // Most points at rest pass it and skip the eigen decomposition
+    {
+        const scalar p = tr(trial)/3;
+        const symmTensor s(dev(trial));
+        const scalar r = 2*sqrt((s && s)/6);  // 2 sqrt(J2/3)
+        if
+        (
+            (k_ - 1)*p + (k_ + 1)*r - sigmaC_ <= 0
+         && (!tensionActive_ || p + r <= sigmaT_)
+        )
+        {
+            stress = trial;
+            return elastic;
+        }
+    }
+
+    // Principal stresses (ascending) and directions of the trial stress
+    Eigen::Matrix3d A;
+    A <<
+        trial.xx(), trial.xy(), trial.xz(),
+        trial.xy(), trial.yy(), trial.yz(),
+        trial.xz(), trial.yz(), trial.zz();
+
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A);
+
+    if (eig.info() != Eigen::Success)
+    {
+        FatalErrorInFunction
+            << "No principal stresses of the trial stress " << trial
+            << " (material " << name_ << ")" << abort(FatalError);
+    }
+
+    const Eigen::Vector3d& ev = eig.eigenvalues();
+    const vector sB(ev(2), ev(1), ev(0));
+
+    vector sC;
+    const returnRegion region = principalReturn(sB, sC);
+
+    if (region == elastic)
+    {
+        stress = trial;
+        return region;
+    }
+
+    if (sC.x() == sC.y() && sC.y() == sC.z())
+    {
+        // Apex: hydrostatic whatever the directions (exactly zero at the
+        // origin)
+        stress = symmTensor(sC.x(), 0, 0, sC.x(), 0, sC.x());
+    }
+    else
+    {
+        // Rotate back with the trial directions
+        const Eigen::Matrix3d& V = eig.eigenvectors();
+        const vector n1(V(0, 2), V(1, 2), V(2, 2));
+        const vector n2(V(0, 1), V(1, 1), V(2, 1));
+        const vector n3(V(0, 0), V(1, 0), V(2, 0));
+        stress = sC.x()*sqr(n1) + sC.y()*sqr(n2) + sC.z()*sqr(n3);
+    }
+
+    // Equivalent deviatoric plastic strain of D^-1 (sB - sC): its
+    // deviatoric part is dev(sB - sC)/(2G)
+    const vector dS(sB - sC);
+    const vector devDS(dS - ((dS.x() + dS.y() + dS.z())/3)*vector::one);
+    plasticStrain += sqrt(2.0/3.0)*mag(devDS)/(2*G_);
+
+    return region;
+}
+
+
+void Foam::constitutiveModels::MohrCoulomb::updateStress
+(
+    const symmTensor& dStrain,
+    symmTensor& stress,
+    scalar& plasticStrain
+) const
+{
+    update(dStrain, stress, plasticStrain);
+}
+
+
+void Foam::constitutiveModels::MohrCoulomb::report(Ostream& os) const
+{
+    constitutiveModel::report(os);
+    os  << "        Mohr-Coulomb: cohesion " << cohesion_
+        << " Pa, friction angle " << radToDeg(phi_)
+        << " deg, dilation angle " << radToDeg(psi_) << " deg, apex ";
+    if (hasApex_)
+    {
+        os  << sigmaApex_ << " Pa";
+    }
+    else
+    {
+        os  << "none";
+    }
+    os  << ", tension cut-off ";
+    if (tensionActive_)
+    {
+        os  << sigmaT_ << " Pa";
+    }
+    else
+    {
+        os  << "none";
+    }
+    os  << nl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,879 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "materialPointSoil.H"
+#include "volFields.H"
+#include "emptyPolyPatch.H"
+#include "DynamicList.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(materialPointSoil, 0);
+}
+
+const Foam::Enum<Foam::materialPointSoil::transferType>
+Foam::materialPointSoil::transferTypeNames
+({
+    { transferType::PIC, "PIC" },
+    { transferType::FLIP, "FLIP" },
+    { transferType::APIC, "APIC" },
+});
+
+const Foam::Enum<Foam::materialPointSoil::updateType>
+Foam::materialPointSoil::updateTypeNames
+({
+    { updateType::USL, "USL" },
+    { updateType::USF, "USF" },
+    { updateType::MUSL, "MUSL" },
+});
+
+const Foam::Enum<Foam::materialPointSoil::wallType>
+Foam::materialPointSoil::wallTypeNames
+({
+    { wallType::slip, "slip" },
+    { wallType::noSlip, "noSlip" },
+    { wallType::friction, "friction" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::materialPointSoil::readMaterials()
+{
+    const dictionary& mats = dict_.subDict("materials");
+    materialNames_ = mats.toc();
+    if (materialNames_.empty())
+    {
+        FatalIOErrorInFunction(mats)
+            << "materials is empty: the soil needs at least one material"
+            << exit(FatalIOError);
+    }
+    materials_.setSize(materialNames_.size());
+    forAll(materialNames_, i)
+    {
+        materials_.set
+        (
+            i,
+            constitutiveModel::New
+            (
+                materialNames_[i],
+                mats.subDict(materialNames_[i])
+            )
+        );
+    }
+}
+
+
+void Foam::materialPointSoil::readWalls()
+{
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    const dictionary& walls = dict_.subDict("walls");
+
+    patchWall_.setSize(patches.size(), wallType::slip);
+    patchFriction_.setSize(patches.size(), 0.0);
+
+    wordList missing;
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        if (pp.coupled() || isA<emptyPolyPatch>(pp))
+        {
+            continue;
+        }
+        if (!walls.found(pp.name()))
+        {
+            missing.append(pp.name());
+            continue;
+        }
+        const dictionary& wd = walls.subDict(pp.name());
+        patchWall_[patchi] = wallTypeNames.get("type", wd);
+        if (patchWall_[patchi] == wallType::friction)
+        {
+            const scalar mu = wd.get<scalar>("coefficient");
+            if (!(mu >= 0))
+            {
+                FatalIOErrorInFunction(wd)
+                    << "coefficient " << mu << " is not allowed: the Coulomb"
+                    << " friction coefficient must be >= 0" << exit(FatalIOError);
+            }
+            patchFriction_[patchi] = mu;
+        }
+    }
+    if (missing.size())
+    {
+        FatalIOErrorInFunction(walls)
+            << "No soil wall condition for patches " << missing << nl
+            << "    Give each wall patch an entry, e.g." << nl
+            << "        " << missing[0] << " { type slip; }" << nl
+            << "    Allowed types: " << wallTypeNames.sortedToc()
+            << " (friction needs coefficient)" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::materialPointSoil::buildGhosts()
+{
+    const List<unsigned char>& kind = lattice_.kind();
+    const labelVector& N = lattice_.globalN();
+    const labelVector& bs = lattice_.boxStart();
+    const labelVector& bn = lattice_.boxN();
+    const labelList& nodeCell = lattice_.nodeCell();
+    const List<FixedList<label, 6>>& cellFace = lattice_.cellBoundaryFace();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+
+    DynamicList<label> ghost, source;
+    DynamicList<vector> sign;
+
+    for (label n = 0; n < lattice_.nBox(); ++n)
+    {
+        if (kind[n] != latticeMesh::WALL)
+        {
+            continue;
+        }
+        const labelVector g = lattice_.globalIjk(n);
+        labelVector r(g);
+        vector s(vector::one);
+        bool reflected = false;
+
+        // Reflect across every boundary plane the node lies beyond
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (g[d] < 0)
+            {
+                r[d] = -1 - g[d];
+            }
+            else if (g[d] >= N[d])
+            {
+                r[d] = 2*N[d] - 1 - g[d];
+            }
+            else
+            {
+                continue;
+            }
+            reflected = true;
+        }
+
+        label src = -1;
+        if (reflected)
+        {
+            const labelVector b = r - bs;
+            if
+            (
+                b.x() >= 0 && b.y() >= 0 && b.z() >= 0
+             && b.x() < bn.x() && b.y() < bn.y() && b.z() < bn.z()
+            )
+            {
+                src = lattice_.node(b.x(), b.y(), b.z());
+                if (kind[src] != latticeMesh::OWNED)
+                {
+                    src = -1;
+                }
+            }
+        }
+
+        if (src >= 0)
+        {
+            // The wall type of each reflected axis: from the boundary face
+            // of the cell next to the wall on that axis
+            for (direction d = 0; d < 3; ++d)
+            {
+                if (g[d] == r[d])
+                {
+                    continue;
+                }
+                labelVector c(r);
+                c[d] = (g[d] < 0 ? 0 : N[d] - 1);
+                const labelVector cb = c - bs;
+                const label cn = lattice_.node(cb.x(), cb.y(), cb.z());
+                const label celli = nodeCell[cn];
+                const label dir = 2*d + (g[d] < 0 ? 0 : 1);
+                const label facei = celli >= 0 ? cellFace[celli][dir] : -1;
+                const wallType wt =
+                    facei >= 0
+                  ? patchWall_[patches.whichPatch(facei)]
+                  : wallType::noSlip;
+                // Mirrors compose: a slip (or friction) wall reverses the
+                // normal component, a noSlip wall every component
+                if (wt == wallType::noSlip)
+                {
+                    s = -s;
+                }
+                else
+                {
+                    s[d] = -s[d];
+                }
+            }
+        }
+        else
+        {
+            // A missing cell (or beyond reach): at rest
+            s = Zero;
+            src = n;
+        }
+
+        ghost.append(n);
+        source.append(src);
+        sign.append(s);
+    }
+    ghostNode_.transfer(ghost);
+    ghostSource_.transfer(source);
+    ghostSign_.transfer(sign);
+
+    // Friction contact nodes
+    DynamicList<label> cn;
+    DynamicList<vector> cnormal;
+    DynamicList<scalar> cmu;
+    forAll(cellFace, celli)
+    {
+        for (label dir = 0; dir < 6; ++dir)
+        {
+            const label facei = cellFace[celli][dir];
+            if (facei < 0)
+            {
+                continue;
+            }
+            const label patchi = patches.whichPatch(facei);
+            if (patchWall_[patchi] != wallType::friction)
+            {
+                continue;
+            }
+            vector normal(Zero);
+            normal[dir/2] = (dir % 2) ? 1 : -1;
+            cn.append(lattice_.cellNode()[celli]);
+            cnormal.append(normal);
+            cmu.append(patchFriction_[patchi]);
+        }
+    }
+    contactNode_.transfer(cn);
+    contactNormal_.transfer(cnormal);
+    contactFriction_.transfer(cmu);
+}
+
+
+inline Foam::vector Foam::materialPointSoil::latticeCoordinates
+(
+    const vector& x
+) const
+{
+    const scalar dx = lattice_.dx();
+    const vector& o = lattice_.origin();
+    const labelVector& bs = lattice_.boxStart();
+    return vector
+    (
+        (x.x() - o.x())/dx - 0.5 - bs.x(),
+        (x.y() - o.y())/dx - 0.5 - bs.y(),
+        lattice_.twoD() ? 0 : (x.z() - o.z())/dx - 0.5 - bs.z()
+    );
+}
+
+
+Foam::scalar Foam::materialPointSoil::stableDt() const
+{
+    scalar cp = 0;
+    forAll(materials_, i)
+    {
+        cp = max(cp, materials_[i].pWaveSpeed());
+    }
+    scalar vmax = 0;
+    for (const vector& v : points_.v)
+    {
+        vmax = max(vmax, magSqr(v));
+    }
+    return CFL_*lattice_.dx()/(cp + std::sqrt(vmax));
+}
+
+
+void Foam::materialPointSoil::clearGrid()
+{
+    gridMass_ = 0;
+    gridMomentum_ = Zero;
+    gridForce_ = Zero;
+}
+
+
+void Foam::materialPointSoil::p2gMassMomentum()
+{
+    const scalar dx = lattice_.dx();
+    const label nDim = lattice_.nDim();
+    const bool apic = (transfer_ == transferType::APIC);
+    shapeWeights sw;
+
+    forAll(points_.x, p)
+    {
+        const vector xl = latticeCoordinates(points_.x[p]);
+        shape_->weights(xl, points_.halfLength[p], nDim, sw);
+        const scalar mp = points_.m[p];
+        const vector& vp = points_.v[p];
+        const tensor& Cp = points_.C[p];
+        sw.forEachNode
+        (
+            [&](label i, label j, label k, scalar N, const vector&)
+            {
+                const label n = lattice_.node(i, j, k);
+                gridMass_[n] += N*mp;
+                if (apic)
+                {
+                    const vector r((i - xl.x())*dx, (j - xl.y())*dx,
+                                   (k - xl.z())*dx);
+                    gridMomentum_[n] += N*mp*(vp + (Cp & r));
+                }
+                else
+                {
+                    gridMomentum_[n] += N*mp*vp;
+                }
+            }
+        );
+    }
+}
+
+
+void Foam::materialPointSoil::gridVelocityFromMomentum
+(
+    List<vector>& vel
+) const
+{
+    forAll(vel, n)
+    {
+        vel[n] = gridMass_[n] > VSMALL ? gridMomentum_[n]/gridMass_[n] : Zero;
+    }
+}
+
+
+void Foam::materialPointSoil::foldGhosts(List<vector>& values, const bool withMass)
+{
+    // The grid beyond a wall is the mirror image of the grid inside: what
+    // the points gave to a node beyond the wall belongs, mirrored, to its
+    // image inside (as if the points had mirror images beyond the wall).
+    // Without this the nodes beyond a slip wall would carry part of the
+    // weight of the points next to it: a spurious friction.
+    forAll(ghostNode_, i)
+    {
+        const label w = ghostNode_[i];
+        const label src = ghostSource_[i];
+        if (src != w)
+        {
+            values[src] += cmptMultiply(ghostSign_[i], values[w]);
+            if (withMass)
+            {
+                gridMass_[src] += gridMass_[w];
+            }
+        }
+        values[w] = Zero;
+        if (withMass)
+        {
+            gridMass_[w] = 0;
+        }
+    }
+}
+
+
+void Foam::materialPointSoil::mirrorGhosts(List<vector>& vel) const
+{
+    forAll(ghostNode_, i)
+    {
+        vel[ghostNode_[i]] = cmptMultiply(ghostSign_[i], vel[ghostSource_[i]]);
+    }
+}
+
+
+void Foam::materialPointSoil::p2gForces()
+{
+    const scalar invDx = 1.0/lattice_.dx();
+    const label nDim = lattice_.nDim();
+    shapeWeights sw;
+    const scalar ramp =
+        (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
+    const vector g = ramp*gravity_;
+
+    forAll(points_.x, p)
+    {
+        const vector xl = latticeCoordinates(points_.x[p]);
+        shape_->weights(xl, points_.halfLength[p], nDim, sw);
+        const symmTensor& s = points_.sigma[p];
+        const scalar Vp = points_.V[p];
+        const vector mg = points_.m[p]*g;
+        sw.forEachNode
+        (
+            [&](label i, label j, label k, scalar N, const vector& gradN)
+            {
+                const label n = lattice_.node(i, j, k);
+                gridForce_[n] += N*mg - Vp*(s & (gradN*invDx));
+            }
+        );
+    }
+}
+
+
+void Foam::materialPointSoil::applyContact(List<vector>& vel) const
+{
+    // Coulomb friction at the last node before a friction wall
+    // (Bardenhagen, Brackbill & Sulsky 2000, CMAME 187, 529)
+    forAll(contactNode_, i)
+    {
+        const label n = contactNode_[i];
+        if (gridMass_[n] <= VSMALL)
+        {
+            continue;
+        }
+        const vector& nw = contactNormal_[i];
+        vector& v = vel[n];
+        const scalar vn = v & nw;
+        if (vn <= 0)
+        {
+            continue;
+        }
+        vector vt = v - vn*nw;
+        const scalar magVt = mag(vt);
+        const scalar reduce =
+            magVt > VSMALL ? max(0.0, 1.0 - contactFriction_[i]*vn/magVt) : 0;
+        v = reduce*vt;
+    }
+}
+
+
+void Foam::materialPointSoil::g2p(const scalar dt)
+{
+    const scalar dx = lattice_.dx();
+    const scalar invDx = 1.0/dx;
+    const label nDim = lattice_.nDim();
+    const bool stressHere = (update_ == updateType::USL);
+    const scalar alpha = (transfer_ == transferType::FLIP ? flipRatio_ : 0);
+    shapeWeights sw;
+
+    forAll(points_.x, p)
+    {
+        const vector xl = latticeCoordinates(points_.x[p]);
+        shape_->weights(xl, points_.halfLength[p], nDim, sw);
+
+        vector vPic(Zero), dv(Zero);
+        tensor L(Zero);
+        sw.forEachNode
+        (
+            [&](label i, label j, label k, scalar N, const vector& gradN)
+            {
+                const label n = lattice_.node(i, j, k);
+                const vector& vn = gridVelocity_[n];
+                vPic += N*vn;
+                dv += N*(vn - gridVelocityOld_[n]);
+                L += vn*(gradN*invDx);
+            }
+        );
+
+        switch (transfer_)
+        {
+            case transferType::PIC:
+                points_.v[p] = vPic;
+                break;
+            case transferType::FLIP:
+                points_.v[p] = alpha*(points_.v[p] + dv) + (1 - alpha)*vPic;
+                break;
+            case transferType::APIC:
+                points_.v[p] = vPic;
+                points_.C[p] = L;
+                break;
+        }
+
+        if (stressHere)
+        {
+            // Jaumann rotation, then the constitutive update
+            const tensor W = skew(L);
+            symmTensor& s = points_.sigma[p];
+            s += dt*symm((W & s) - (s & W));
+            const symmTensor dEps = symm(L)*dt;
+            materials_[points_.material[p]].updateStress
+            (
+                dEps, s, points_.plasticStrain[p]
+            );
+            points_.F[p] = (tensor::I + dt*L) & points_.F[p];
+            points_.V[p] = det(points_.F[p])*points_.V0[p];
+        }
+
+        points_.x[p] += dt*vPic;
+        if (clamp(points_.x[p]))
+        {
+            ++nClamped_;
+        }
+    }
+}
+
+
+void Foam::materialPointSoil::updateStresses
+(
+    const List<vector>& vel,
+    const scalar dt
+)
+{
+    const scalar invDx = 1.0/lattice_.dx();
+    const label nDim = lattice_.nDim();
+    shapeWeights sw;
+
+    forAll(points_.x, p)
+    {
+        const vector xl = latticeCoordinates(points_.x[p]);
+        shape_->weights(xl, points_.halfLength[p], nDim, sw);
+        tensor L(Zero);
+        sw.forEachNode
+        (
+            [&](label i, label j, label k, scalar, const vector& gradN)
+            {
+                L += vel[lattice_.node(i, j, k)]*(gradN*invDx);
+            }
+        );
+        const tensor W = skew(L);
+        symmTensor& s = points_.sigma[p];
+        s += dt*symm((W & s) - (s & W));
+        materials_[points_.material[p]].updateStress
+        (
+            symm(L)*dt, s, points_.plasticStrain[p]
+        );
+        points_.F[p] = (tensor::I + dt*L) & points_.F[p];
+        points_.V[p] = det(points_.F[p])*points_.V0[p];
+    }
+}
+
+
+bool Foam::materialPointSoil::clamp(vector& x) const
+{
+    const scalar dx = lattice_.dx();
+    const vector& o = lattice_.origin();
+    const labelVector& N = lattice_.globalN();
+    const scalar eps = 1e-6*dx;
+    bool moved = false;
+    for (direction d = 0; d < (lattice_.twoD() ? 2 : 3); ++d)
+    {
+        const scalar lo = o[d] + eps;
+        const scalar hi = o[d] + N[d]*dx - eps;
+        if (x[d] < lo)
+        {
+            x[d] = lo;
+            moved = true;
+        }
+        else if (x[d] > hi)
+        {
+            x[d] = hi;
+            moved = true;
+        }
+    }
+    return moved;
+}
+
+
+void Foam::materialPointSoil::subStep(const scalar dt)
+{
+    clearGrid();
+    p2gMassMomentum();
+    foldGhosts(gridMomentum_, true);
+    gridVelocityFromMomentum(gridVelocityOld_);
+    mirrorGhosts(gridVelocityOld_);
+
+    if (update_ == updateType::USF)
+    {
+        updateStresses(gridVelocityOld_, dt);
+    }
+
+    p2gForces();
+    foldGhosts(gridForce_, false);
+    if (localDamping_ > 0)
+    {
+        forAll(gridForce_, n)
+        {
+            vector& f = gridForce_[n];
+            const vector& v = gridVelocityOld_[n];
+            for (direction d = 0; d < 3; ++d)
+            {
+                f[d] -= localDamping_*mag(f[d])*((v[d] > 0) - (v[d] < 0));
+            }
+        }
+    }
+    forAll(gridVelocity_, n)
+    {
+        gridVelocity_[n] =
+            gridMass_[n] > VSMALL
+          ? gridVelocityOld_[n] + dt*gridForce_[n]/gridMass_[n]
+          : Zero;
+    }
+    applyContact(gridVelocity_);
+    mirrorGhosts(gridVelocity_);
+
+    g2p(dt);
+
+    if (update_ == updateType::MUSL)
+    {
+        clearGrid();
+        p2gMassMomentum();
+        foldGhosts(gridMomentum_, true);
+        List<vector> vel(gridVelocity_.size());
+        gridVelocityFromMomentum(vel);
+        applyContact(vel);
+        mirrorGhosts(vel);
+        updateStresses(vel, dt);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
+:
+    lattice_(lattice),
+    mesh_(lattice.mesh()),
+    dict_
+    (
+        IOobject
+        (
+            "soilProperties",
+            mesh_.time().constant(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    shape_(shapeFunction::New(dict_)),
+    transfer_(transferTypeNames.get("transfer", dict_)),
+    flipRatio_
+    (
+        dict_.optionalSubDict("FLIPCoeffs").getOrDefault<scalar>("ratio", 0.99)
+    ),
+    update_(updateTypeNames.getOrDefault("updateScheme", dict_, updateType::USL)),
+    CFL_(dict_.getOrDefault<scalar>("CFL", 0.5)),
+    gravity_(dict_.getOrDefault<vector>("gravity", Zero)),
+    gravityRamp_(dict_.getOrDefault<scalar>("gravityRamp", 0)),
+    localDamping_(dict_.getOrDefault<scalar>("localDamping", 0)),
+    time_(mesh_.time().value()),
+    nClamped_(0),
+    nSubSteps_(0),
+    subDt_(0),
+    nTotalSubSteps_(0)
+{
+    if (Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << "The soil (material point method) runs serially in this"
+            << " version: run without -parallel, or without the soil effect"
+            << exit(FatalError);
+    }
+    if (lattice_.periodic()[0] || lattice_.periodic()[1] || lattice_.periodic()[2])
+    {
+        FatalErrorInFunction
+            << "The soil does not support cyclic (periodic) patches yet:"
+            << " use walls" << exit(FatalError);
+    }
+    if (lattice_.haloWidth() < shape_->reach())
+    {
+        FatalErrorInFunction
+            << "Lattice halo width " << lattice_.haloWidth() << " is below"
+            << " the reach " << shape_->reach() << " of shape function "
+            << shape_->type() << abort(FatalError);
+    }
+    if (!(CFL_ > 0 && CFL_ <= 1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "CFL " << CFL_ << " is not allowed: it must lie in (0, 1]"
+            << exit(FatalIOError);
+    }
+    if (!(gravityRamp_ >= 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "gravityRamp " << gravityRamp_ << " is not allowed: it must be"
+            << " >= 0 [s]" << exit(FatalIOError);
+    }
+    if (!(localDamping_ >= 0 && localDamping_ < 1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "localDamping " << localDamping_ << " is not allowed: it must"
+            << " lie in [0, 1)" << exit(FatalIOError);
+    }
+    if (!(flipRatio_ >= 0 && flipRatio_ <= 1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "FLIPCoeffs: ratio " << flipRatio_ << " is not allowed: it must"
+            << " lie in [0, 1] (0: PIC, 1: pure FLIP)" << exit(FatalIOError);
+    }
+
+    readMaterials();
+    readWalls();
+
+    // Grid
+    const label nBox = lattice_.nBox();
+    gridMass_.setSize(nBox, 0.0);
+    gridMomentum_.setSize(nBox, Zero);
+    gridForce_.setSize(nBox, Zero);
+    gridVelocity_.setSize(nBox, Zero);
+    gridVelocityOld_.setSize(nBox, Zero);
+    buildGhosts();
+
+    // Points
+    if (!points_.read(mesh_, mesh_.time().timeName()))
+    {
+        FatalErrorInFunction
+            << "No material points in " << mesh_.time().timePath()
+            << "/lagrangian/" << materialPoints::cloudName << nl
+            << "    Make them with setMaterialPoints (system/"
+            << "setMaterialPointsDict)" << exit(FatalError);
+    }
+    forAll(points_.material, p)
+    {
+        if (points_.material[p] < 0 || points_.material[p] >= materials_.size())
+        {
+            FatalErrorInFunction
+                << "Material point " << p << " has material index "
+                << points_.material[p] << " but soilProperties defines "
+                << materials_.size() << " materials " << materialNames_
+                << exit(FatalError);
+        }
+        shape_->checkHalfLength(points_.halfLength[p].x());
+    }
+
+    Info<< "Material point soil" << nl
+        << "    points       " << points_.size() << " ("
+        << materialPoints::memoryPerPoint() << " bytes per point)" << nl
+        << "    shape function " << shape_->type() << ", transfer "
+        << transferTypeNames[transfer_];
+    if (transfer_ == transferType::FLIP)
+    {
+        Info<< " (ratio " << flipRatio_ << ")";
+    }
+    Info<< ", update " << updateTypeNames[update_] << nl
+        << "    gravity      " << gravity_ << " m/s2";
+    if (gravityRamp_ > 0)
+    {
+        Info<< ", ramped over " << gravityRamp_ << " s";
+    }
+    Info<< nl;
+    if (localDamping_ > 0)
+    {
+        Info<< "    local damping " << localDamping_ << nl;
+    }
+    forAll(materials_, i)
+    {
+        Info<< "    material " << materialNames_[i] << ": ";
+        materials_[i].report(Info);
+        Info<< "        p-wave speed " << materials_[i].pWaveSpeed()
+            << " m/s" << nl;
+    }
+    Info<< "    stable time step " << stableDt() << " s (CFL " << CFL_
+        << "); controlDict deltaT " << mesh_.time().deltaTValue() << " s"
+        << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::materialPointSoil::advance(const scalar deltaT)
+{
+    const scalar dtStable = stableDt();
+    nSubSteps_ = max(label(std::ceil(deltaT/dtStable - 1e-9)), label(1));
+    subDt_ = deltaT/nSubSteps_;
+    for (label s = 0; s < nSubSteps_; ++s)
+    {
+        time_ += subDt_;
+        subStep(subDt_);
+    }
+    nTotalSubSteps_ += nSubSteps_;
+
+    if (nClamped_)
+    {
+        WarningInFunction
+            << nClamped_ << " material point moves out of the domain were"
+            << " stopped at the boundary at time " << mesh_.time().timeName()
+            << " s" << endl;
+        nClamped_ = 0;
+    }
+}
+
+
+Foam::scalar Foam::materialPointSoil::memoryBytes() const
+{
+    return
+        scalar(points_.size())*materialPoints::memoryPerPoint()
+      + scalar(lattice_.nBox())*(sizeof(scalar) + 4*sizeof(vector));
+}
+
+
+Foam::scalar Foam::materialPointSoil::kineticEnergy() const
+{
+    scalar e = 0;
+    forAll(points_.v, p)
+    {
+        e += 0.5*points_.m[p]*magSqr(points_.v[p]);
+    }
+    return e;
+}
+
+
+void Foam::materialPointSoil::write() const
+{
+    points_.write(mesh_, lattice_);
+
+    // Nodal fields: soil volume fraction and velocity
+    volScalarField alpha
+    (
+        IOobject
+        (
+            "soilFraction",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh_,
+        dimensionedScalar(dimless, Zero)
+    );
+    volVectorField Us
+    (
+        IOobject
+        (
+            "Usoil",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh_,
+        dimensionedVector(dimVelocity, Zero)
+    );
+
+    scalarList vol(lattice_.nBox(), 0.0), mass(lattice_.nBox(), 0.0);
+    List<vector> mom(lattice_.nBox(), Zero);
+    const label nDim = lattice_.nDim();
+    shapeWeights sw;
+    forAll(points_.x, p)
+    {
+        const vector xl = latticeCoordinates(points_.x[p]);
+        shape_->weights(xl, points_.halfLength[p], nDim, sw);
+        sw.forEachNode
+        (
+            [&](label i, label j, label k, scalar N, const vector&)
+            {
+                const label n = lattice_.node(i, j, k);
+                vol[n] += N*points_.V[p];
+                mass[n] += N*points_.m[p];
+                mom[n] += N*points_.m[p]*points_.v[p];
+            }
+        );
+    }
+    const scalar Vcell = lattice_.cellVolume();
+    forAll(lattice_.cellNode(), celli)
+    {
+        const label n = lattice_.cellNode()[celli];
+        alpha[celli] = vol[n]/Vcell;
+        Us[celli] = mass[n] > VSMALL ? mom[n]/mass[n] : Zero;
+    }
+    alpha.write();
+    Us.write();
+}
+
+
+// ************************************************************************* //

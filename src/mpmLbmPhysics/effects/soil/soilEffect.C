@@ -1,0 +1,73 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "soilEffect.H"
+#include "physicsScene.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace physicsEffects
+{
+    defineTypeNameAndDebug(soil, 0);
+    addToRunTimeSelectionTable(physicsEffect, soil, scene);
+}
+}
+
+
+Foam::physicsEffects::soil::soil(physicsScene& scene)
+:
+    physicsEffect(scene),
+    mpm_(scene.lattice(2))
+{}
+
+
+void Foam::physicsEffects::soil::evolve()
+{
+    mpm_.advance(scene_.mesh().time().deltaTValue());
+}
+
+
+void Foam::physicsEffects::soil::write()
+{
+    mpm_.write();
+}
+
+
+Foam::scalar Foam::physicsEffects::soil::updatesPerStep() const
+{
+    return mpm_.points().size();
+}
+
+
+Foam::scalar Foam::physicsEffects::soil::updatesDone() const
+{
+    return mpm_.pointUpdates();
+}
+
+
+Foam::scalar Foam::physicsEffects::soil::memoryBytes() const
+{
+    return mpm_.memoryBytes();
+}
+
+
+Foam::string Foam::physicsEffects::soil::progress() const
+{
+    return
+        "soil sub-steps " + Foam::name(mpm_.nSubSteps())
+      + "  kinetic energy " + Foam::name(mpm_.kineticEnergy()) + " J";
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,1331 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+Application
+    Test-constitutiveModels
+
+Description
+    Unit checks of the soil constitutive models (tension positive):
+    - linearElastic: uniaxial strain, Hooke's law against the compliance,
+      moduli and p-wave speed, the batch loop;
+    - MohrCoulomb for several cohesion/friction/dilation sets, Tresca and
+      a tension cut-off: elastic trial unchanged, the Clausen et al. regions
+      (triaxial compression line, extension line, apex, plane), yield
+      function zero to round-off after a return, admissibility, order,
+      agreement of the region tests with a brute-force search over the
+      active sets (Koiter's flow rule with non-negative multipliers),
+      closest point in the energy norm for psi = phi, rotation invariance,
+      exact zero stress at the origin apex, no NaN, plane-strain failure;
+    - DruckerPrager for the three fits: cone/apex, flow direction, closest
+      point for psi = phi, rotation invariance, the fits touch the
+      Mohr-Coulomb edges or reproduce its plane-strain failure;
+    - bad input raises FatalIOError naming the keyword.
+    Prints PASS:/FAIL: lines; exits 1 on any failure.
+
+\*---------------------------------------------------------------------------*/
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include "constitutiveModel.H"
+#include "linearElastic.H"
+#include "MohrCoulomb.H"
+#include "DruckerPrager.H"
+#include "IOstreams.H"
+#include "IStringStream.H"
+#include "Random.H"
+#include "scalarList.H"
+#include "DynamicList.H"
+#include "tensor.H"
+#include "transform.H"
+#include "unitConversion.H"
+
+#include <sstream>
+#include <cmath>
+
+using namespace Foam;
+using constitutiveModels::MohrCoulomb;
+using constitutiveModels::DruckerPrager;
+
+static label nFail = 0;
+
+static void check
+(
+    const bool ok,
+    const std::string& what,
+    const scalar err,
+    const scalar tol
+)
+{
+    Info<< (ok ? "PASS: " : "FAIL: ") << what.c_str() << " (error " << err
+        << ", tolerance " << tol << ")" << endl;
+    if (!ok)
+    {
+        ++nFail;
+    }
+}
+
+static bool finite(const symmTensor& s)
+{
+    for (direction i = 0; i < symmTensor::nComponents; ++i)
+    {
+        if (!std::isfinite(s[i])) return false;
+    }
+    return true;
+}
+
+static scalar maxMag(const symmTensor& s)
+{
+    return cmptMax(cmptMag(s));
+}
+
+static scalar maxMag(const vector& v)
+{
+    return cmptMax(cmptMag(v));
+}
+
+static std::string num(const scalar x)
+{
+    std::ostringstream os;
+    os.precision(17);
+    os << x;
+    return os.str();
+}
+
+
+// * * * * * * * * * * * * * * * * Helpers  * * * * * * * * * * * * * * * * //
+
+// Principal stresses sorted descending (independent Eigen call)
+static vector principal(const symmTensor& s)
+{
+    Eigen::Matrix3d A;
+    A << s.xx(), s.xy(), s.xz(), s.xy(), s.yy(), s.yz(), s.xz(), s.yz(),
+        s.zz();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A, Eigen::EigenvaluesOnly);
+    const Eigen::Vector3d& e = eig.eigenvalues();
+    return vector(e(2), e(1), e(0));
+}
+
+// Random rotation from a random unit quaternion
+static tensor randomRotation(Random& rnd)
+{
+    scalar q[4];
+    scalar n = 0;
+    do
+    {
+        n = 0;
+        for (int i = 0; i < 4; ++i)
+        {
+            q[i] = rnd.GaussNormal<scalar>();
+            n += q[i]*q[i];
+        }
+    } while (n < 1e-6);
+    n = std::sqrt(n);
+    const scalar w = q[0]/n, x = q[1]/n, y = q[2]/n, z = q[3]/n;
+    return tensor
+    (
+        1 - 2*(y*y + z*z), 2*(x*y - w*z), 2*(x*z + w*y),
+        2*(x*y + w*z), 1 - 2*(x*x + z*z), 2*(y*z - w*x),
+        2*(x*z - w*y), 2*(y*z + w*x), 1 - 2*(x*x + y*y)
+    );
+}
+
+static symmTensor randomSymm(Random& rnd, const scalar scale)
+{
+    symmTensor s;
+    for (direction i = 0; i < symmTensor::nComponents; ++i)
+    {
+        s[i] = scale*(2*rnd.sample01<scalar>() - 1);
+    }
+    return s;
+}
+
+// Principal stresses sorted descending with random magnitudes in
+// [-S, S] plus a hydrostatic shift in [shiftLo, shiftHi]
+static vector randomPrincipal
+(
+    Random& rnd,
+    const scalar S,
+    const scalar shiftLo,
+    const scalar shiftHi
+)
+{
+    scalar v[3];
+    for (int i = 0; i < 3; ++i)
+    {
+        v[i] = S*(2*rnd.sample01<scalar>() - 1);
+    }
+    std::sort(v, v + 3);
+    const scalar shift = shiftLo + (shiftHi - shiftLo)*rnd.sample01<scalar>();
+    return vector(v[2] + shift, v[1] + shift, v[0] + shift);
+}
+
+static symmTensor diagonal(const vector& s)
+{
+    return symmTensor(s.x(), 0, 0, s.y(), 0, s.z());
+}
+
+// Principal-space elastic matrix and its inverse
+struct principalElasticity
+{
+    scalar lambda, G, E, nu;
+
+    explicit principalElasticity(const constitutiveModel& m)
+    :
+        lambda(m.lambda()), G(m.G()), E(m.E()), nu(m.nu())
+    {}
+
+    vector D(const vector& v) const
+    {
+        return lambda*(v.x() + v.y() + v.z())*vector::one + 2*G*v;
+    }
+
+    vector Dinv(const vector& v) const
+    {
+        return ((1 + nu)*v - nu*(v.x() + v.y() + v.z())*vector::one)/E;
+    }
+};
+
+
+// Brute-force reference of the exact return: every active set of at most
+// three planes a.s <= c, with sC = sB - sum dl_j D b_j, dl >= 0, every plane
+// satisfied and the order kept; Clausen et al.'s region tests must select
+// the same state
+struct referenceReturn
+{
+    principalElasticity el;
+    DynamicList<vector> a, b;
+    DynamicList<scalar> c;
+
+    referenceReturn(const MohrCoulomb& mc)
+    :
+        el(mc)
+    {
+        const scalar k = mc.k(), m = mc.m(), sc = mc.sigmaC();
+        a.append(vector(k, 0, -1)); b.append(vector(m, 0, -1)); c.append(sc);
+        a.append(vector(0, k, -1)); b.append(vector(0, m, -1)); c.append(sc);
+        a.append(vector(k, -1, 0)); b.append(vector(m, -1, 0)); c.append(sc);
+        // The planes of the other three sectors (active at the apex only)
+        a.append(vector(-1, k, 0)); b.append(vector(-1, m, 0)); c.append(sc);
+        a.append(vector(-1, 0, k)); b.append(vector(-1, 0, m)); c.append(sc);
+        a.append(vector(0, -1, k)); b.append(vector(0, -1, m)); c.append(sc);
+        if (mc.tensionCutoff() < mc.apexStress())
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                vector e(Zero);
+                e[d] = 1;
+                a.append(e); b.append(e); c.append(mc.tensionCutoff());
+            }
+        }
+    }
+
+    bool admissible(const vector& s, const scalar tol) const
+    {
+        if (s.x() < s.y() - tol || s.y() < s.z() - tol) return false;
+        forAll(a, i)
+        {
+            if ((a[i] & s) - c[i] > tol) return false;
+        }
+        return true;
+    }
+
+    // Returns the number of valid candidates; sC the one with fewest
+    // planes, spread the largest distance between valid candidates
+    label operator()
+    (
+        const vector& sB,
+        vector& sC,
+        scalar& spread,
+        const scalar tol
+    ) const
+    {
+        if (admissible(sB, tol))
+        {
+            sC = sB;
+            spread = 0;
+            return 1;
+        }
+        const label n = a.size();
+        label nValid = 0;
+        spread = 0;
+        DynamicList<vector> valid;
+        for (label size = 1; size <= 3; ++size)
+        {
+            for (label set = 1; set < (1 << n); ++set)
+            {
+                label idx[3], cnt = 0;
+                for (label i = 0; i < n; ++i)
+                {
+                    if (set & (1 << i))
+                    {
+                        if (cnt < 3) idx[cnt] = i;
+                        ++cnt;
+                    }
+                }
+                if (cnt != size) continue;
+
+                // Unused rows padded with the scale of the used ones
+                Eigen::Matrix3d A = (2*el.G)*Eigen::Matrix3d::Identity();
+                Eigen::Vector3d r = Eigen::Vector3d::Zero();
+                for (label i = 0; i < size; ++i)
+                {
+                    r(i) = (a[idx[i]] & sB) - c[idx[i]];
+                    for (label j = 0; j < size; ++j)
+                    {
+                        A(i, j) = a[idx[i]] & el.D(b[idx[j]]);
+                    }
+                }
+                Eigen::FullPivLU<Eigen::Matrix3d> lu(A);
+                lu.setThreshold(1e-9);
+                if (!lu.isInvertible()) continue;
+                const Eigen::Vector3d dl = lu.solve(r);
+                vector s(sB);
+                bool ok = true;
+                for (label j = 0; j < size; ++j)
+                {
+                    const vector Db(el.D(b[idx[j]]));
+                    if (dl(j)*mag(Db) < -tol) ok = false;
+                    s -= dl(j)*Db;
+                }
+                if (!ok || !admissible(s, tol)) continue;
+                forAll(valid, v)
+                {
+                    spread = max(spread, maxMag(valid[v] - s));
+                }
+                valid.append(s);
+                ++nValid;
+            }
+        }
+        if (nValid)
+        {
+            sC = valid[0];
+        }
+        return nValid;
+    }
+};
+
+
+static dictionary makeDict(const std::string& text)
+{
+    IStringStream is(text);
+    return dictionary(is);
+}
+
+static std::string elasticPart()
+{
+    return "rho 1669.5; E 75e6; nu 0.3; ";
+}
+
+static std::string mcText
+(
+    const scalar c,
+    const scalar phi,
+    const scalar psi,
+    const std::string& extra = ""
+)
+{
+    return "model MohrCoulomb; " + elasticPart()
+        + "MohrCoulombCoeffs { cohesion " + num(c) + "; frictionAngle "
+        + num(phi) + "; dilationAngle " + num(psi) + "; " + extra + " }";
+}
+
+static std::string dpText
+(
+    const scalar c,
+    const scalar phi,
+    const scalar psi,
+    const word& fit
+)
+{
+    return "model DruckerPrager; " + elasticPart()
+        + "DruckerPragerCoeffs { cohesion " + num(c) + "; frictionAngle "
+        + num(phi) + "; dilationAngle " + num(psi) + "; fit " + fit + "; }";
+}
+
+
+// * * * * * * * * * * * * * * * linearElastic  * * * * * * * * * * * * * * //
+
+static void testLinearElastic()
+{
+    const dictionary dict(makeDict("model linearElastic; " + elasticPart()));
+    autoPtr<constitutiveModel> model = constitutiveModel::New("soil", dict);
+    const constitutiveModel& m = model();
+
+    check(m.type() == "linearElastic", "linearElastic selected", 0, 0);
+
+    const scalar E = 75e6, nu = 0.3;
+    const scalar Mexact = E*(1 - nu)/((1 + nu)*(1 - 2*nu));
+    const scalar lambdaExact = E*nu/((1 + nu)*(1 - 2*nu));
+    scalar err =
+        max
+        (
+            max
+            (
+                mag(m.M() - Mexact)/Mexact,
+                mag(m.lambda() + 2*m.G() - Mexact)/Mexact
+            ),
+            max
+            (
+                mag(m.K() - (m.lambda() + 2*m.G()/3))/m.K(),
+                mag(m.pWaveSpeed() - std::sqrt(Mexact/1669.5))
+               /m.pWaveSpeed()
+            )
+        );
+    check(err < 1e-14, "linearElastic moduli G, K, M and sqrt(M/rho)", err,
+        1e-14);
+
+    // Uniaxial strain along z
+    const scalar eps = -1e-3;
+    symmTensor sigma(Zero);
+    scalar ep = 0.25;
+    m.updateStress(symmTensor(0, 0, 0, 0, 0, eps), sigma, ep);
+    err =
+        max
+        (
+            mag(sigma.zz() - Mexact*eps),
+            max
+            (
+                max(mag(sigma.xx() - lambdaExact*eps),
+                    mag(sigma.yy() - lambdaExact*eps)),
+                max(mag(sigma.xy()), max(mag(sigma.xz()), mag(sigma.yz())))
+            )
+        )/(Mexact*mag(eps));
+    check(err < 1e-14 && ep == 0.25,
+        "linearElastic uniaxial strain: sigma_zz = M eps, sigma_xx = "
+        "sigma_yy = lambda eps", err, 1e-14);
+
+    // Hooke's law on random increments, checked through the compliance
+    Random rnd(1);
+    err = 0;
+    List<symmTensor> dEps(100), s0(100), s1(100);
+    scalarList eps0(100, 0.0);
+    forAll(dEps, i)
+    {
+        dEps[i] = randomSymm(rnd, 1e-3);
+        s0[i] = randomSymm(rnd, 1e5);
+        symmTensor s(s0[i]);
+        scalar e = 0;
+        m.updateStress(dEps[i], s, e);
+        const symmTensor dS(s - s0[i]);
+        const symmTensor back(((1 + nu)*dS - (nu*tr(dS))*I)/E);
+        err = max(err, maxMag(back - dEps[i])/maxMag(dEps[i]));
+        s1[i] = s;
+    }
+    check(err < 1e-12, "linearElastic Hooke exact (compliance inverts it)",
+        err, 1e-12);
+
+    // Batch loop equals the point loop
+    List<symmTensor> sb(s0);
+    m.updateStresses(sb.size(), dEps.cdata(), sb.data(), eps0.data());
+    err = 0;
+    forAll(sb, i)
+    {
+        err = max(err, maxMag(sb[i] - s1[i]));
+    }
+    check(err == 0, "linearElastic updateStresses equals updateStress", err,
+        0);
+}
+
+
+// * * * * * * * * * * * * * * * * MohrCoulomb  * * * * * * * * * * * * * * //
+
+struct mcSet
+{
+    scalar c, phi, psi;
+    std::string extra;
+};
+
+static std::string mcLabel(const mcSet& s)
+{
+    std::ostringstream os;
+    os << "MC(c=" << s.c/1e3 << "kPa phi=" << s.phi << " psi=" << s.psi;
+    if (!s.extra.empty()) os << " " << s.extra;
+    os << ")";
+    return os.str();
+}
+
+
+// State after the return from a trial principal state, in principal space
+static scalar mcSurfaceResidual(const MohrCoulomb& mc, const vector& s)
+{
+    scalar r = mc.yieldFunction(s);
+    if (mc.tensionCutoff() < mc.apexStress())
+    {
+        r = max(r, s.x() - mc.tensionCutoff());
+    }
+    return r;
+}
+
+
+static void testMohrCoulombSet(const mcSet& set)
+{
+    const std::string tag = mcLabel(set);
+    const dictionary dict(makeDict(mcText(set.c, set.phi, set.psi, set.extra)));
+    autoPtr<constitutiveModel> model = constitutiveModel::New("sand", dict);
+    const MohrCoulomb& mc = refCast<const MohrCoulomb>(model());
+    const principalElasticity el(mc);
+    const scalar G = mc.G();
+    const scalar k = mc.k();
+    const scalar p0 = 100e3;
+    // Stress scale of the checks
+    const scalar S = max(p0, mc.sigmaC());
+    const scalar tol = 1e-10;
+
+    // Isotropic start and the yield function there
+    const vector s0(-p0*vector::one);
+    const scalar f0 = mc.yieldFunction(s0);
+
+    // 1. Elastic trial unchanged
+    {
+        // Deviatoric parts well inside the strength
+        const scalar amp = 0.05*(-f0)/(k + 1);
+        const symmTensor sA
+        (
+            -p0 + amp, 0.4*amp, -0.2*amp, -p0 - 0.3*amp, 0.3*amp, -p0
+        );
+        const symmTensor dEps
+        (
+            symmTensor(0.2, -0.4, 0, 0.6, 0.2, -0.4)*amp/(2*G)
+        );
+        symmTensor s(sA);
+        scalar ep = 0;
+        const MohrCoulomb::returnRegion r = mc.update(dEps, s, ep);
+        const symmTensor expect(sA + mc.lambda()*tr(dEps)*I + 2*G*dEps);
+        const scalar err = maxMag(s - expect)/S;
+        check(r == MohrCoulomb::elastic && err < 1e-15 && ep == 0,
+            tag + " elastic trial unchanged", err, 1e-15);
+    }
+
+    // 2. Triaxial compression path (isochoric, axial z): s1 = s2
+    {
+        const scalar delta = 1.5*(-f0)/(2*G*(k + 2));
+        const symmTensor dEps(delta, 0, 0, delta, 0, -2*delta);
+        symmTensor s(-p0*I);
+        scalar ep = 0;
+        const MohrCoulomb::returnRegion r = mc.update(dEps, s, ep);
+        const vector sp(principal(s));
+        const scalar err =
+            max(mag(sp.x() - sp.y()), mag(mc.yieldFunction(sp)))/S;
+        check(r == MohrCoulomb::compressionLine && err < tol && ep > 0,
+            tag + " triaxial compression -> line 1, s1 = s2, f = 0",
+            err, tol);
+    }
+
+    // 3. Triaxial extension path: s2 = s3
+    {
+        const scalar delta = 1.5*(-f0)/(2*G*(2*k + 1));
+        const symmTensor dEps(-delta, 0, 0, -delta, 0, 2*delta);
+        symmTensor s(-p0*I);
+        scalar ep = 0;
+        const MohrCoulomb::returnRegion r = mc.update(dEps, s, ep);
+        const vector sp(principal(s));
+        const scalar err =
+            max(mag(sp.y() - sp.z()), mag(mc.yieldFunction(sp)))/S;
+        check(r == MohrCoulomb::extensionLine && err < tol && ep > 0,
+            tag + " triaxial extension -> line 2, s2 = s3, f = 0",
+            err, tol);
+    }
+
+    // 4. A plane case (Lode angle 0, pure shear)
+    {
+        const scalar delta = 1.5*(-f0)/(2*G*(k + 1));
+        const symmTensor dEps(delta, 0, 0, 0, 0, -delta);
+        symmTensor s(-p0*I);
+        scalar ep = 0;
+        const MohrCoulomb::returnRegion r = mc.update(dEps, s, ep);
+        const vector sp(principal(s));
+        const scalar gap = min(sp.x() - sp.y(), sp.y() - sp.z())/S;
+        const scalar err = mag(mc.yieldFunction(sp))/S;
+        check(r == MohrCoulomb::plane && err < tol && gap > 1e-3,
+            tag + " pure shear -> plane, f = 0, s1 > s2 > s3 (gap "
+          + num(gap) + ")", err, tol);
+    }
+
+    // 5. Pure tension with c > 0 -> apex c cot(phi)
+    if (set.c > 0 && mc.hasApex() && !(mc.tensionCutoff() < mc.apexStress()))
+    {
+        const scalar delta = 10*mc.apexStress()/(3*mc.K());
+        const symmTensor dEps(delta, 1e-2*delta, 0, 0.5*delta, 0, 2*delta);
+        symmTensor s(Zero);
+        scalar ep = 0;
+        const MohrCoulomb::returnRegion r = mc.update(dEps, s, ep);
+        const scalar apexExact =
+            set.c/std::tan(degToRad(set.phi));
+        const scalar err = maxMag(s - apexExact*I)/apexExact;
+        check(r == MohrCoulomb::apex && err < 1e-14,
+            tag + " pure tension -> apex c cot(phi) (1,1,1)", err, 1e-14);
+    }
+
+    // 6. Random trial states in principal space: admissible, ordered, on the
+    //    surface when plastic, and the same state as the brute-force
+    //    search over active sets (Koiter: non-negative multipliers)
+    {
+        const referenceReturn ref(mc);
+        Random rnd(17);
+        label counts[7] = {0, 0, 0, 0, 0, 0, 0};
+        scalar eAdm = 0, eOrder = 0, eSurf = 0, eRef = 0, eSpread = 0;
+        label nNoRef = 0, nNoRefApex = 0, nAmbiguous = 0;
+        const label nTrial = 10000;
+        for (label t = 0; t < nTrial; ++t)
+        {
+            const scalar Sx = (t % 3 == 0) ? 0.2*S : S;
+            const vector sB(randomPrincipal(rnd, 2*Sx, -2*Sx, Sx));
+            vector sC;
+            const MohrCoulomb::returnRegion r = mc.principalReturn(sB, sC);
+            ++counts[r];
+            const scalar sc = max(maxMag(sB), S);
+            const scalar res = mcSurfaceResidual(mc, sC)/sc;
+            eAdm = max(eAdm, res);
+            eOrder = max(eOrder, max(sC.y() - sC.x(), sC.z() - sC.y())/sc);
+            if (r != MohrCoulomb::elastic)
+            {
+                eSurf = max(eSurf, mag(res));
+            }
+            vector sR;
+            scalar spread;
+            const label nValid = ref(sB, sR, spread, 1e-9*sc);
+            if (nValid)
+            {
+                eRef = max(eRef, maxMag(sC - sR)/sc);
+                eSpread = max(eSpread, spread/sc);
+                if (spread > 1e-8*sc) ++nAmbiguous;
+            }
+            else
+            {
+                ++nNoRef;
+                if (r == MohrCoulomb::apex) ++nNoRefApex;
+                else if (std::getenv("TEST_DEBUG"))
+                {
+                    Info<< "no Koiter solution: region " << int(r)
+                        << " sB " << sB << " sC " << sC << endl;
+                }
+            }
+        }
+        std::ostringstream os;
+        os << " [elastic " << counts[0] << ", plane " << counts[1]
+           << ", line 1 " << counts[2] << ", line 2 " << counts[3]
+           << ", apex " << counts[4] << ", tension " << counts[5]
+           << ", split " << counts[6] << "]";
+        check(eAdm < tol, tag + " 1e4 random trials admissible" + os.str(),
+            eAdm, tol);
+        check(eOrder < tol, tag + " returned s1 >= s2 >= s3", eOrder, tol);
+        check(eSurf < tol, tag + " plastic returns on the surface (f = 0"
+            + std::string(mc.tensionCutoff() < mc.apexStress()
+            ? " or s1 = sigma_t)" : ")"), eSurf, tol);
+        // Without a Koiter solution the only legitimate answer is the apex
+        // (psi < phi: the flow cannot make the volumetric strain there);
+        // with psi = phi there is always one
+        check
+        (
+            eRef < tol && nNoRef == nNoRefApex && counts[6] == 0
+         && (set.psi < set.phi || nNoRef == 0),
+            tag + " region tests agree with brute-force active sets ("
+          + num(nTrial - nNoRef) + " compared, " + num(nNoRef)
+          + " apex returns without a Koiter solution, "
+          + num(nAmbiguous) + " ambiguous, spread " + num(eSpread) + ")",
+            eRef, tol
+        );
+    }
+
+    // 7. Rotation invariance and coaxiality on the tensor level
+    {
+        Random rnd(23);
+        scalar eRot = 0, eCoax = 0, eEp = 0, eEpValue = 0, eAdm = 0;
+        bool finiteAll = true;
+        for (label t = 0; t < 10000; ++t)
+        {
+            const tensor R(randomRotation(rnd));
+            const symmTensor sA(randomSymm(rnd, S) - 0.5*S*I);
+            const symmTensor dEps(randomSymm(rnd, 2*S/G));
+            symmTensor s1(sA), s2(transform(R, sA));
+            scalar ep1 = 0, ep2 = 0;
+            mc.updateStress(dEps, s1, ep1);
+            mc.updateStress(transform(R, dEps), s2, ep2);
+            const scalar sc = max(maxMag(s1), S);
+            finiteAll = finiteAll && finite(s1) && finite(s2)
+                && std::isfinite(ep1) && std::isfinite(ep2);
+            eAdm = max(eAdm, mcSurfaceResidual(mc, principal(s1))/sc);
+            eRot = max(eRot, maxMag(s2 - transform(R, s1))/sc);
+            eEp = max(eEp, mag(ep1 - ep2)/max(ep1, SMALL));
+            const symmTensor trial(sA + mc.lambda()*tr(dEps)*I + 2*G*dEps);
+            const tensor comm(tensor(s1) & tensor(trial));
+            // Equivalent plastic strain of D^-1 (trial - s1)
+            const symmTensor dS(trial - s1);
+            const symmTensor dEp
+            (
+                ((1 + mc.nu())*dS - (mc.nu()*tr(dS))*I)/mc.E()
+            );
+            const symmTensor de(dev(dEp));
+            const scalar epExact = std::sqrt(2.0/3.0*(de && de));
+            eEpValue = max(eEpValue, mag(ep1 - epExact)/(mag(epExact)
+                + maxMag(trial)/mc.E()));
+            eCoax =
+                max(eCoax, cmptMax(cmptMag(comm - comm.T()))/(sc*sc));
+        }
+        check(finiteAll && eAdm < tol, tag + " 1e4 random tensor updates: "
+            "no NaN, admissible", eAdm, tol);
+        check(eRot < tol, tag + " rotation invariance R s R^T", eRot, tol);
+        check(eEp < tol, tag + " plastic strain rotation invariant", eEp,
+            tol);
+        check(eEpValue < tol, tag + " plastic strain increment = "
+            "sqrt(2/3 e:e), e = dev D^-1(trial - returned)", eEpValue, tol);
+        check(eCoax < tol, tag + " returned stress coaxial with the trial",
+            eCoax, tol);
+    }
+
+    // 8. Associated: closest point in the energy norm
+    if (set.psi == set.phi)
+    {
+        Random rnd(29);
+        // Admissible points to compare with: returns of random trials
+        List<vector> admissiblePoints(400);
+        forAll(admissiblePoints, i)
+        {
+            mc.principalReturn
+            (
+                randomPrincipal(rnd, 2*S, -2*S, S),
+                admissiblePoints[i]
+            );
+        }
+        if (mc.tensionCutoff() < mc.apexStress())
+        {
+            admissiblePoints[0] = mc.tensionCutoff()*vector::one;
+        }
+        else if (mc.hasApex())
+        {
+            admissiblePoints[0] = mc.apexStress()*vector::one;
+        }
+
+        scalar eGrad = 0, eVI = 0;
+        label nPlane = 0, nWorse = 0;
+        for (label t = 0; t < 2000; ++t)
+        {
+            const vector sB(randomPrincipal(rnd, 2*S, -2*S, S));
+            vector sC;
+            const MohrCoulomb::returnRegion r = mc.principalReturn(sB, sC);
+            if (r == MohrCoulomb::elastic) continue;
+            const vector eps(el.Dinv(sB - sC));
+            const scalar E0 = (sB - sC) & eps;
+
+            // Variational inequality (sB - sC) : D^-1 (tau - sC) <= 0
+            forAll(admissiblePoints, i)
+            {
+                // Cosine in the energy norm
+                const vector d(admissiblePoints[i] - sC);
+                const scalar vi = eps & d;
+                const scalar nd = std::sqrt(d & el.Dinv(d));
+                // (tau = sC itself: the cosine of round-off is meaningless)
+                if (nd < 1e-8*std::sqrt(E0)) continue;
+                const scalar cosVI = vi/(std::sqrt(E0)*nd + VSMALL);
+                if (cosVI > 1e-6 && std::getenv("TEST_DEBUG"))
+                {
+                    Info<< "VI " << cosVI << " region " << int(r) << " sB "
+                        << sB << " sC " << sC << " tau "
+                        << admissiblePoints[i] << endl;
+                }
+                eVI = max(eVI, cosVI);
+            }
+
+            if (r == MohrCoulomb::plane)
+            {
+                ++nPlane;
+                // Analytic optimality: D^-1 (sB - sC) parallel to a
+                const vector a(k, 0, -1);
+                eGrad = max(eGrad, mag(eps ^ a)/(mag(eps)*mag(a)));
+
+                // Brute force: no point of the plane near sC is closer
+                const vector u(vector(1, 0, k) / mag(vector(1, 0, k)));
+                const vector v(0, 1, 0);
+                for (label j = 0; j < 50; ++j)
+                {
+                    const scalar h = mag(sB - sC)*std::pow(10.0, -3*rnd.sample01<scalar>());
+                    const scalar ang = 2*M_PI*rnd.sample01<scalar>();
+                    const vector tau(sC + h*(std::cos(ang)*u + std::sin(ang)*v));
+                    const vector d(sB - tau);
+                    if ((d & el.Dinv(d)) < E0*(1 - 1e-12)) ++nWorse;
+                }
+            }
+        }
+        check(eGrad < tol, tag + " plane return is the energy-norm "
+            "projection (" + num(nPlane) + " plane returns)", eGrad, tol);
+        check(nWorse == 0, tag + " brute force: no closer point on the "
+            "plane", nWorse, 0);
+        check(eVI < tol, tag + " closest point: (sB - sC):D^-1(tau - sC) "
+            "<= 0 for admissible tau", eVI, tol);
+    }
+
+    // 9. Zero stress, zero increment; no NaN for tiny and huge states
+    {
+        symmTensor s(Zero);
+        scalar ep = 0;
+        mc.updateStress(symmTensor::zero, s, ep);
+        bool ok = (maxMag(s) == 0 && ep == 0);
+        Random rnd(31);
+        for (label t = 0; t < 200; ++t)
+        {
+            const scalar scale = std::pow(10.0, -300 + 310*rnd.sample01<scalar>());
+            symmTensor st(randomSymm(rnd, scale));
+            mc.updateStress(randomSymm(rnd, scale/G), st, ep);
+            ok = ok && finite(st) && std::isfinite(ep);
+        }
+        check(ok, tag + " zero state stays zero, no NaN from 1e-300 to "
+            "1e10 Pa", 0, 0);
+    }
+}
+
+
+// c = 0 with the default cut-off: apex at the origin. With psi = 0 the
+// apex region of the exact return is every trial with a tensile mean
+// stress, so every tensile trial returns to exactly zero. With psi > 0 the
+// apex region is the cone of the flow directions around the hydrostatic
+// axis: near-hydrostatic tension returns to zero, a strongly deviatoric
+// tensile trial (uniaxial tension) to the cone (compressive stresses, the
+// exact return for that flow rule); either way the result is tension-free.
+static void testMohrCoulombOrigin()
+{
+    for (const scalar phi : {30.0, 45.0})
+    {
+        for (const scalar psi : {0.0, 10.0, phi})
+        {
+            const dictionary dict
+            (
+                makeDict(mcText(0, phi, psi, "tensionCutoff 0;"))
+            );
+            autoPtr<constitutiveModel> model =
+                constitutiveModel::New("sand", dict);
+            const MohrCoulomb& mc = refCast<const MohrCoulomb>(model());
+            const std::string tag =
+                "MC(c=0 phi=" + num(phi) + " psi=" + num(psi) + ")";
+
+            Random rnd(37);
+            scalar eZero = 0, eAdm = 0;
+            label nZero = 0;
+            bool ok = true;
+            const label nTrial = 10000;
+            for (label t = 0; t < nTrial; ++t)
+            {
+                // Tensile trial: non-negative principal stresses, any
+                // directions, magnitudes from 1e-20 to 1e8 Pa; near-
+                // hydrostatic (deviator below 10 %) when psi > 0
+                const scalar scale =
+                    std::pow(10.0, -20 + 28*rnd.sample01<scalar>());
+                vector p(scale*rnd.sample01<vector>());
+                if (t % 4 == 0) p.y() = 0;
+                if (t % 8 == 0) p = vector::zero;
+                const bool hydro = (psi > 0 && t % 2 == 1);
+                if (hydro)
+                {
+                    p = scale*(vector::one + 0.1*rnd.sample01<vector>());
+                }
+                const tensor R(randomRotation(rnd));
+                const symmTensor trial(transform(R, diagonal(p)));
+                // Split the trial into a stress and a strain increment
+                symmTensor s(0.5*trial);
+                const symmTensor half(0.5*trial);
+                const symmTensor dEps
+                (
+                    (
+                        (1 + mc.nu())*half - (mc.nu()*tr(half))*I
+                    )/mc.E()
+                );
+                scalar ep = 0;
+                mc.updateStress(dEps, s, ep);
+                ok = ok && finite(s) && std::isfinite(ep) && ep >= 0;
+                const vector sp(principal(s));
+                eAdm = max(eAdm, max(sp.x(), mc.yieldFunction(sp))/scale);
+                if (maxMag(s) == 0) ++nZero;
+                if (psi == 0 || hydro)
+                {
+                    eZero = max(eZero, maxMag(s));
+                }
+            }
+            check(ok && eZero == 0 && eAdm < 1e-10,
+                tag + (psi == 0 ? " every tensile trial" : " near-hydrostatic"
+                " tensile trials") + " return exactly to zero stress ("
+              + num(nZero) + "/" + num(nTrial) + " tensile trials exactly"
+                " zero, all tension-free: max(s1, f) "
+              + num(eAdm) + ")", eZero, 0);
+
+            // Mixed trials: tension-free result; psi = 0: zero whenever the
+            // trial mean stress is tensile
+            scalar eMean = 0;
+            for (label t = 0; t < nTrial; ++t)
+            {
+                const vector sB(randomPrincipal(rnd, 1e5, -1e5, 1e5));
+                symmTensor s(transform(randomRotation(rnd), diagonal(sB)));
+                scalar ep = 0;
+                mc.updateStress(symmTensor::zero, s, ep);
+                const vector sp(principal(s));
+                eAdm = max(eAdm, max(sp.x(), mc.yieldFunction(sp))/1e5);
+                ok = ok && finite(s);
+                if (psi == 0 && sB.x() + sB.y() + sB.z() > 0)
+                {
+                    eMean = max(eMean, maxMag(s));
+                }
+            }
+            check(ok && eAdm < 1e-10 && eMean == 0,
+                tag + " mixed trials: s1 <= 0 and f <= 0"
+              + (psi == 0 ? ", zero for tensile mean stress" : ""),
+                max(eAdm, eMean), 1e-10);
+        }
+    }
+}
+
+
+// Tension cut-off: exact answer of a uniaxial-strain tension test
+static void testMohrCoulombTension()
+{
+    const scalar c = 20e3, sigmaT = 5e3;
+    for (const scalar psi : {0.0, 30.0})
+    {
+        const dictionary dict
+        (
+            makeDict(mcText(c, 30, psi, "tensionCutoff " + num(sigmaT) + ";"))
+        );
+        autoPtr<constitutiveModel> model =
+            constitutiveModel::New("clay", dict);
+        const MohrCoulomb& mc = refCast<const MohrCoulomb>(model());
+        const std::string tag = "MC(c=20kPa phi=30 psi=" + num(psi)
+            + " sigma_t=5kPa)";
+
+        // Uniaxial strain tension along x from zero: Rankine plane with
+        // lateral stresses lambda/M sigma_t
+        const scalar delta = 10*sigmaT/mc.M();
+        symmTensor s(Zero);
+        scalar ep = 0;
+        const MohrCoulomb::returnRegion r =
+            mc.update(symmTensor(delta, 0, 0, 0, 0, 0), s, ep);
+        const scalar lat = mc.lambda()/mc.M()*sigmaT;
+        const scalar err = maxMag(s - symmTensor(sigmaT, 0, 0, lat, 0, lat))
+            /sigmaT;
+        check(r == MohrCoulomb::tension && err < 1e-12,
+            tag + " uniaxial-strain tension -> (sigma_t, lambda/M sigma_t,"
+            " lambda/M sigma_t)", err, 1e-12);
+
+        // Hydrostatic tension -> (sigma_t, sigma_t, sigma_t)
+        s = symmTensor::zero;
+        mc.update(symmTensor(delta, 0, 0, delta, 0, delta), s, ep);
+        const scalar err2 = maxMag(s - sigmaT*I)/sigmaT;
+        check(err2 < 1e-12, tag + " hydrostatic tension -> Rankine apex",
+            err2, 1e-12);
+    }
+}
+
+
+// Plane-strain steady plastic flow: the in-plane failure obeys
+// (s1 - s3)/2 + (s1 + s3)/2 sin(phi) = c cos(phi)
+static scalar planeStrainFailure
+(
+    const constitutiveModel& m,
+    const scalar c,
+    const scalar phiDeg,
+    const scalar psiDeg
+)
+{
+    const scalar phi = degToRad(phiDeg), psi = degToRad(psiDeg);
+    // Impose the plane-strain Mohr-Coulomb flow direction (x: major,
+    // y: minor, z: out of plane): at a stationary stress the plastic flow
+    // of the model must match it
+    const scalar delta = 2e-5;
+    const symmTensor dEps
+    (
+        0.5*(1 + std::sin(psi))*delta, 0, 0,
+        0.5*(-1 + std::sin(psi))*delta, 0, 0
+    );
+    symmTensor s(-100e3*I);
+    scalar ep = 0;
+    for (label i = 0; i < 20000; ++i)
+    {
+        m.updateStress(dEps, s, ep);
+    }
+    const scalar t = 0.5*(s.xx() - s.yy());
+    const scalar mp = 0.5*(s.xx() + s.yy());
+    return
+        mag(t + mp*std::sin(phi) - c*std::cos(phi))
+       /(mag(t) + mag(mp)*std::sin(phi) + c*std::cos(phi));
+}
+
+
+static void testMohrCoulomb()
+{
+    const List<mcSet> sets
+    ({
+        {0, 30, 0, ""},
+        {0, 30, 30, ""},
+        {0, 45, 0, ""},
+        {0, 45, 45, ""},
+        {10e3, 30, 0, ""},
+        {10e3, 30, 30, ""},
+        {10e3, 45, 10, ""},
+        {10e3, 45, 45, ""},
+        {50e3, 0, 0, ""},                       // Tresca
+        {20e3, 30, 30, "tensionCutoff 5e3;"},
+        {20e3, 30, 10, "tensionCutoff 5e3;"},
+        {20e3, 0, 0, "tensionCutoff 5e3;"},     // Tresca + Rankine
+        {5e3, 60, 20, "tensionCutoff 0;"},
+        {1e3, 1e-3, 0, ""}                      // nearly Tresca
+    });
+    forAll(sets, i)
+    {
+        testMohrCoulombSet(sets[i]);
+    }
+
+    testMohrCoulombOrigin();
+    testMohrCoulombTension();
+
+    for (const scalar psi : {0.0, 15.0, 30.0})
+    {
+        const dictionary dict(makeDict(mcText(10e3, 30, psi)));
+        autoPtr<constitutiveModel> model = constitutiveModel::New("s", dict);
+        const scalar err = planeStrainFailure(model(), 10e3, 30, psi);
+        check(err < 1e-10, "MC(c=10kPa phi=30 psi=" + num(psi)
+            + ") plane-strain steady flow on the failure line", err, 1e-10);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * DruckerPrager  * * * * * * * * * * * * * * //
+
+static void testDruckerPragerSet
+(
+    const scalar c,
+    const scalar phi,
+    const scalar psi,
+    const word& fit
+)
+{
+    const std::string tag = "DP(" + fit + " c=" + num(c/1e3) + "kPa phi="
+        + num(phi) + " psi=" + num(psi) + ")";
+    const dictionary dict(makeDict(dpText(c, phi, psi, fit)));
+    autoPtr<constitutiveModel> model = constitutiveModel::New("clay", dict);
+    const DruckerPrager& dp = refCast<const DruckerPrager>(model());
+    const scalar G = dp.G(), K = dp.K();
+    const scalar S = max(100e3, c);
+    const scalar tol = 1e-10;
+
+    // Elastic trial unchanged
+    {
+        const symmTensor s0(-S, 1e3, 0, -S, -1e3, -1.1*S);
+        const symmTensor dEps(1e-6, 0, 1e-6, -1e-6, 0, 0);
+        symmTensor s(s0);
+        scalar ep = 0;
+        const DruckerPrager::returnRegion r = dp.update(dEps, s, ep);
+        const symmTensor expect(s0 + dp.lambda()*tr(dEps)*I + 2*G*dEps);
+        const scalar err = maxMag(s - expect)/S;
+        check(r == DruckerPrager::elastic && err < 1e-15 && ep == 0,
+            tag + " elastic trial unchanged", err, 1e-15);
+    }
+
+    // Random trials
+    Random rnd(41);
+    label counts[3] = {0, 0, 0};
+    scalar eAdm = 0, eSurf = 0, eApex = 0, eFlow = 0, eRot = 0;
+    bool ok = true;
+    for (label t = 0; t < 10000; ++t)
+    {
+        const symmTensor trial
+        (
+            randomSymm(rnd, (t % 3 == 0 ? 0.2 : 1)*S)
+          + (S*(rnd.sample01<scalar>() - 0.7))*I
+        );
+        symmTensor s(trial);
+        scalar ep = 0;
+        const DruckerPrager::returnRegion r =
+            dp.update(symmTensor::zero, s, ep);
+        ++counts[r];
+        ok = ok && finite(s) && std::isfinite(ep) && ep >= 0;
+        const scalar sc = max(maxMag(trial), S);
+        const scalar f = dp.yieldFunction(s)/sc;
+        eAdm = max(eAdm, f);
+        if (r == DruckerPrager::cone)
+        {
+            eSurf = max(eSurf, mag(f));
+            // Flow: D^-1(trial - s) = dGamma (s/(2 sqrt(J2)) + etaBar/3 I):
+            // deviatoric part parallel to dev(s), volumetric/deviatoric
+            // norm ratio sqrt(2) etaBar
+            const symmTensor dS(trial - s);
+            const symmTensor devEp(dev(dS)/(2*G));
+            const scalar volEp = tr(dS)/(3*K);
+            const symmTensor sd(dev(s));
+            const scalar nd = std::sqrt(devEp && devEp);
+            const scalar ns = std::sqrt(sd && sd);
+            if (ns > 1e-6*sc)
+            {
+                eFlow = max(eFlow, maxMag(devEp/nd - sd/ns));
+                eFlow = max(eFlow, mag(volEp/nd - std::sqrt(2.0)*dp.etaBar()));
+            }
+        }
+        else if (r == DruckerPrager::apex)
+        {
+            eApex = max(eApex, maxMag(s - dp.apexStress()*I)/sc);
+        }
+
+        // Rotation invariance
+        const tensor R(randomRotation(rnd));
+        symmTensor sr(transform(R, trial));
+        scalar epr = 0;
+        dp.updateStress(symmTensor::zero, sr, epr);
+        eRot = max(eRot, maxMag(sr - transform(R, s))/sc);
+    }
+    std::ostringstream os;
+    os << " [elastic " << counts[0] << ", cone " << counts[1] << ", apex "
+       << counts[2] << "]";
+    check(ok && eAdm < tol, tag + " 1e4 random trials admissible, no NaN"
+        + os.str(), eAdm, tol);
+    check(eSurf < tol, tag + " cone returns on the cone (f = 0)", eSurf,
+        tol);
+    check(eApex == 0, tag + " apex returns exactly at xi c/eta", eApex, 0);
+    check(eFlow < 1e-8, tag + " flow direction dev(s)/|s| and "
+        "vol/dev = sqrt(2) etaBar", eFlow, 1e-8);
+    check(eRot < tol, tag + " rotation invariance", eRot, tol);
+
+    // Associated: closest point in the energy norm (variational inequality)
+    if (psi == phi)
+    {
+        List<symmTensor> adm(300);
+        forAll(adm, i)
+        {
+            adm[i] = randomSymm(rnd, S) - 0.5*S*I;
+            scalar ep = 0;
+            dp.updateStress(symmTensor::zero, adm[i], ep);
+        }
+        if (dp.eta() > 0) adm[0] = dp.apexStress()*I;
+        scalar eVI = 0;
+        for (label t = 0; t < 1000; ++t)
+        {
+            const symmTensor trial(randomSymm(rnd, S) - 0.3*S*I);
+            symmTensor s(trial);
+            scalar ep = 0;
+            if (dp.update(symmTensor::zero, s, ep) == DruckerPrager::elastic)
+            {
+                continue;
+            }
+            const symmTensor dS(trial - s);
+            const symmTensor eps((1 + dp.nu())*dS - (dp.nu()*tr(dS))*I);
+            forAll(adm, i)
+            {
+                // Cosine in the energy norm
+                const symmTensor d(adm[i] - s);
+                const symmTensor epsD((1 + dp.nu())*d - (dp.nu()*tr(d))*I);
+                if ((d && epsD) < 1e-16*(dS && eps)) continue;
+                eVI = max(eVI, (eps && d)
+                    /(std::sqrt((dS && eps)*(d && epsD)) + VSMALL));
+            }
+        }
+        check(eVI < tol, tag + " closest point in the energy norm", eVI,
+            tol);
+    }
+
+    // c = 0: tensile states return to zero (every one for psi = 0,
+    // near-hydrostatic ones for psi > 0; see testMohrCoulombOrigin)
+    if (c == 0 && dp.eta() > 0)
+    {
+        scalar eZero = 0;
+        label nZero = 0;
+        for (label t = 0; t < 1000; ++t)
+        {
+            vector p(1e5*rnd.sample01<vector>());
+            const bool hydro = (psi > 0);
+            if (hydro)
+            {
+                p = 1e5*(vector::one + 0.1*rnd.sample01<vector>());
+            }
+            symmTensor s(transform(randomRotation(rnd), diagonal(p)));
+            scalar ep = 0;
+            dp.updateStress(symmTensor::zero, s, ep);
+            eZero = max(eZero, maxMag(s));
+            if (maxMag(s) == 0) ++nZero;
+        }
+        symmTensor s(Zero);
+        scalar ep = 0;
+        dp.updateStress(symmTensor::zero, s, ep);
+        eZero = max(eZero, maxMag(s));
+        check(eZero == 0 && ep == 0, tag + (psi > 0 ? " near-hydrostatic" :
+            " every") + " tensile trial and the zero state return exactly"
+            " to zero", eZero, 0);
+    }
+}
+
+
+static void testDruckerPragerFits()
+{
+    const scalar c = 10e3, phi = 30;
+    // A Mohr-Coulomb material for the edges
+    const dictionary mcDict(makeDict(mcText(c, phi, phi)));
+    autoPtr<constitutiveModel> mcModel = constitutiveModel::New("m", mcDict);
+    const MohrCoulomb& mc = refCast<const MohrCoulomb>(mcModel());
+
+    for (const word fit : {"outerCone", "innerCone"})
+    {
+        const dictionary dict(makeDict(dpText(c, phi, phi, fit)));
+        autoPtr<constitutiveModel> model = constitutiveModel::New("d", dict);
+        const DruckerPrager& dp = refCast<const DruckerPrager>(model());
+        // Points of line 1 (s1 = s2) or line 2 (s2 = s3) below the apex
+        const vector r =
+            (fit == "outerCone")
+          ? vector(1, 1, mc.k()) : vector(1, mc.k(), mc.k());
+        scalar err = 0;
+        for (const scalar t : {-1e3, -1e4, -1e5, -1e6})
+        {
+            const vector s(mc.apexStress()*vector::one + t*r);
+            err = max(err, mag(dp.yieldFunction(diagonal(s)))/mag(t));
+        }
+        err = max(err, mag(dp.apexStress() - mc.apexStress())/mc.apexStress());
+        check(err < 1e-12, "DP " + fit + " passes through the Mohr-Coulomb "
+            + (fit == "outerCone" ? "compression" : "extension")
+            + " edges and apex", err, 1e-12);
+    }
+
+    for (const scalar psi : {0.0, 15.0, 30.0})
+    {
+        const dictionary dict(makeDict(dpText(c, phi, psi, "planeStrain")));
+        autoPtr<constitutiveModel> model = constitutiveModel::New("d", dict);
+        const scalar err = planeStrainFailure(model(), c, phi, psi);
+        check(err < 1e-10, "DP planeStrain (psi=" + num(psi)
+            + ") steady plane-strain flow on the Mohr-Coulomb failure line",
+            err, 1e-10);
+    }
+}
+
+
+static void testDruckerPrager()
+{
+    for (const word fit : {"outerCone", "innerCone", "planeStrain"})
+    {
+        testDruckerPragerSet(0, 30, 0, fit);
+        testDruckerPragerSet(0, 30, 30, fit);
+        testDruckerPragerSet(10e3, 45, 10, fit);
+        testDruckerPragerSet(10e3, 45, 45, fit);
+    }
+    testDruckerPragerSet(50e3, 0, 0, "planeStrain");   // von Mises
+    testDruckerPragerFits();
+}
+
+
+// * * * * * * * * * * * * * * * * Bad input  * * * * * * * * * * * * * * * //
+
+static void expectFatal
+(
+    const std::string& text,
+    const std::string& keyword,
+    const std::string& what
+)
+{
+    std::string msg;
+    bool thrown = false;
+    try
+    {
+        const dictionary dict(makeDict(text));
+        autoPtr<constitutiveModel> model = constitutiveModel::New("bad", dict);
+    }
+    catch (const Foam::IOerror& err)
+    {
+        thrown = true;
+        msg = err.message();
+    }
+    catch (const Foam::error& err)
+    {
+        thrown = true;
+        msg = "(not an IOerror) " + err.message();
+    }
+    for (char& ch : msg)
+    {
+        if (ch == '\n') ch = ' ';
+    }
+    const bool named = (msg.find(keyword) != std::string::npos);
+    Info<< (thrown && named ? "PASS: " : "FAIL: ") << what.c_str()
+        << " -> FatalIOError naming " << keyword.c_str() << ": \""
+        << msg.c_str() << "\"" << endl;
+    if (!(thrown && named))
+    {
+        ++nFail;
+    }
+}
+
+static void testBadInput()
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    const std::string mc = "MohrCoulombCoeffs { cohesion 0; frictionAngle 30;"
+        " dilationAngle 0; }";
+    expectFatal("model MohrCoulomb; rho 1669.5; E 75e6; nu 0.5; " + mc,
+        "nu 0.5 is not allowed", "nu = 0.5");
+    expectFatal("model linearElastic; rho 1669.5; E 75e6; nu -1;",
+        "nu -1 is not allowed", "nu = -1");
+    expectFatal("model linearElastic; rho 0; E 75e6; nu 0.3;",
+        "rho 0 is not allowed", "rho = 0");
+    expectFatal("model linearElastic; rho 1000; E -5; nu 0.3;",
+        "E -5 is not allowed", "E < 0");
+    expectFatal("model linearElastic; rho 1000; nu 0.3;", "E",
+        "missing E");
+    expectFatal(mcText(0, 90, 0), "frictionAngle 90 is not allowed",
+        "frictionAngle = 90");
+    expectFatal(mcText(0, -1, 0), "frictionAngle -1 is not allowed",
+        "frictionAngle < 0");
+    expectFatal(mcText(0, 45, 50), "dilationAngle 50 is not allowed",
+        "dilationAngle > frictionAngle");
+    expectFatal(mcText(-1, 30, 0), "cohesion -1 is not allowed",
+        "cohesion < 0");
+    expectFatal(mcText(1e3, 30, 0, "tensionCutoff -1;"),
+        "tensionCutoff -1 is not allowed", "tensionCutoff < 0");
+    expectFatal(dpText(0, 90, 0, "outerCone"),
+        "frictionAngle 90 is not allowed", "DruckerPrager frictionAngle = 90");
+    expectFatal(dpText(0, 30, 31, "outerCone"),
+        "dilationAngle 31 is not allowed",
+        "DruckerPrager dilationAngle > frictionAngle");
+    expectFatal(dpText(0, 30, 0, "middleCone"), "middleCone",
+        "DruckerPrager unknown fit");
+    expectFatal("model CamClay; rho 1000; E 1e6; nu 0.3;", "CamClay",
+        "unknown model");
+
+    FatalError.dontThrowExceptions();
+    FatalIOError.dontThrowExceptions();
+
+    // A cut-off above the apex is clipped (with a warning)
+    const dictionary dict(makeDict(mcText(0, 30, 0, "tensionCutoff 1e3;")));
+    autoPtr<constitutiveModel> model = constitutiveModel::New("sand", dict);
+    const MohrCoulomb& m = refCast<const MohrCoulomb>(model());
+    check(m.tensionCutoff() == 0, "tensionCutoff above the apex is clipped "
+        "to c cot(phi)", m.tensionCutoff(), 0);
+}
+
+
+// * * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    testLinearElastic();
+    testMohrCoulomb();
+    testDruckerPrager();
+    testBadInput();
+
+    // Reports
+    {
+        const dictionary dict(makeDict(mcText(0, 45, 0)));
+        constitutiveModel::New("sand", dict)->report(Info);
+        const dictionary dict2(makeDict(dpText(5e3, 30, 10, "planeStrain")));
+        constitutiveModel::New("clay", dict2)->report(Info);
+    }
+
+    if (nFail)
+    {
+        Info<< nl << nFail << " check(s) FAILED" << endl;
+        return 1;
+    }
+    Info<< nl << "All checks passed" << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //
