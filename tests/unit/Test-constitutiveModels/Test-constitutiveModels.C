@@ -28,7 +28,8 @@ Description
       point for psi = phi, rotation invariance, the fits touch the
       Mohr-Coulomb edges or reproduce its plane-strain failure;
     - bad input raises FatalIOError naming the keyword.
-    Prints PASS:/FAIL: lines; exits 1 on any failure.
+    Prints PASS:/FAIL: lines; exits 1 on any failure. TEST_DEBUG=1 in the
+    environment prints the states behind some failures.
 
 \*---------------------------------------------------------------------------*/
 

@@ -298,7 +298,9 @@ Foam::constitutiveModels::MohrCoulomb::returnTension
     //     sC = sB - sum_{j in A} dl_j D b_j,  a_i.sC = c_i (i in A),
     //     dl_j >= 0, every plane satisfied, s1 >= s2 >= s3.
     // The Mohr-Coulomb return alone violated the cut-off, so a Rankine plane
-    // is active. Sets with fewer planes are tried first.
+    // is active. Sets with fewer planes are tried first. The Mohr-Coulomb
+    // planes of the other three sectors join these only at the apex, which
+    // the cut-off removes.
 
     const scalar scale =
         max
