@@ -204,13 +204,16 @@ void Foam::materialPointSoil::buildGhosts()
                     facei >= 0
                   ? patchWall_[patches.whichPatch(facei)]
                   : wallType::noSlip;
-                // Mirrors compose: a slip (or friction) wall reverses the
-                // normal component, a noSlip wall every component
+                // Mirrors compose: a slip wall reverses the normal
+                // component, a noSlip wall every component. Beyond a
+                // friction wall the node copies the last node inside, which
+                // thereby carries the whole load on the wall and meets it
+                // through the Coulomb contact
                 if (wt == wallType::noSlip)
                 {
                     s = -s;
                 }
-                else
+                else if (wt == wallType::slip)
                 {
                     s[d] = -s[d];
                 }
