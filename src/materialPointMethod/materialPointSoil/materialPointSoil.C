@@ -48,6 +48,39 @@ Foam::materialPointSoil::wallTypeNames
 });
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// An enumerated entry, refused with the keyword, the value and the choices
+template<class EnumType>
+EnumType selectEntry
+(
+    const Foam::Enum<EnumType>& names,
+    const Foam::word& key,
+    const Foam::dictionary& dict,
+    const bool optional = false,
+    const EnumType deflt = EnumType(0)
+)
+{
+    if (optional && !dict.found(key))
+    {
+        return deflt;
+    }
+    const Foam::word value(dict.get<Foam::word>(key));
+    if (!names.found(value))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " " << value << " is not allowed: choose one of "
+            << names.sortedToc() << Foam::exit(Foam::FatalIOError);
+    }
+    return names[value];
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::materialPointSoil::readMaterials()
@@ -98,7 +131,7 @@ void Foam::materialPointSoil::readWalls()
             continue;
         }
         const dictionary& wd = walls.subDict(pp.name());
-        patchWall_[patchi] = wallTypeNames.get("type", wd);
+        patchWall_[patchi] = selectEntry(wallTypeNames, "type", wd);
         if (patchWall_[patchi] == wallType::friction)
         {
             const scalar mu = wd.get<scalar>("coefficient");
@@ -644,12 +677,18 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
         )
     ),
     shape_(shapeFunction::New(dict_)),
-    transfer_(transferTypeNames.get("transfer", dict_)),
+    transfer_(selectEntry(transferTypeNames, "transfer", dict_)),
     flipRatio_
     (
         dict_.optionalSubDict("FLIPCoeffs").getOrDefault<scalar>("ratio", 0.99)
     ),
-    update_(updateTypeNames.getOrDefault("updateScheme", dict_, updateType::USL)),
+    update_
+    (
+        selectEntry
+        (
+            updateTypeNames, "updateScheme", dict_, true, updateType::USL
+        )
+    ),
     CFL_(dict_.getOrDefault<scalar>("CFL", 0.5)),
     gravity_(dict_.getOrDefault<vector>("gravity", Zero)),
     gravityRamp_(dict_.getOrDefault<scalar>("gravityRamp", 0)),
