@@ -800,7 +800,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     }
     forAll(materials_, i)
     {
-        Info<< "    material " << materialNames_[i] << ": ";
+        Info<< "  ";
         materials_[i].report(Info);
         Info<< "        p-wave speed " << materials_[i].pWaveSpeed()
             << " m/s" << nl;
