@@ -339,23 +339,45 @@ void Foam::materialPointSoil::clearGrid()
 }
 
 
-void Foam::materialPointSoil::p2gMassMomentum()
+void Foam::materialPointSoil::computeWeights()
+{
+    const label nDim = lattice_.nDim();
+    weights_.setSize(points_.size());
+    forAll(points_.x, p)
+    {
+        shape_->weights
+        (
+            latticeCoordinates(points_.x[p]),
+            points_.halfLength[p],
+            nDim,
+            weights_[p]
+        );
+    }
+}
+
+
+void Foam::materialPointSoil::p2gMassMomentum(const bool withForces)
 {
     const scalar dx = lattice_.dx();
-    const label nDim = lattice_.nDim();
+    const scalar invDx = 1.0/dx;
     const bool apic = (transfer_ == transferType::APIC);
-    shapeWeights sw;
+    const scalar ramp =
+        (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
+    const vector g = ramp*gravity_;
 
     forAll(points_.x, p)
     {
+        const shapeWeights& sw = weights_[p];
         const vector xl = latticeCoordinates(points_.x[p]);
-        shape_->weights(xl, points_.halfLength[p], nDim, sw);
         const scalar mp = points_.m[p];
         const vector& vp = points_.v[p];
         const tensor& Cp = points_.C[p];
+        const symmTensor& s = points_.sigma[p];
+        const scalar Vp = points_.V[p];
+        const vector mg = mp*g;
         sw.forEachNode
         (
-            [&](label i, label j, label k, scalar N, const vector&)
+            [&](label i, label j, label k, scalar N, const vector& gradN)
             {
                 const label n = lattice_.node(i, j, k);
                 gridMass_[n] += N*mp;
@@ -368,6 +390,10 @@ void Foam::materialPointSoil::p2gMassMomentum()
                 else
                 {
                     gridMomentum_[n] += N*mp*vp;
+                }
+                if (withForces)
+                {
+                    gridForce_[n] += N*mg - Vp*(s & (gradN*invDx));
                 }
             }
         );
@@ -427,16 +453,13 @@ void Foam::materialPointSoil::mirrorGhosts(List<vector>& vel) const
 void Foam::materialPointSoil::p2gForces()
 {
     const scalar invDx = 1.0/lattice_.dx();
-    const label nDim = lattice_.nDim();
-    shapeWeights sw;
     const scalar ramp =
         (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
     const vector g = ramp*gravity_;
 
     forAll(points_.x, p)
     {
-        const vector xl = latticeCoordinates(points_.x[p]);
-        shape_->weights(xl, points_.halfLength[p], nDim, sw);
+        const shapeWeights& sw = weights_[p];
         const symmTensor& s = points_.sigma[p];
         const scalar Vp = points_.V[p];
         const vector mg = points_.m[p]*g;
@@ -481,17 +504,13 @@ void Foam::materialPointSoil::applyContact(List<vector>& vel) const
 
 void Foam::materialPointSoil::g2p(const scalar dt)
 {
-    const scalar dx = lattice_.dx();
-    const scalar invDx = 1.0/dx;
-    const label nDim = lattice_.nDim();
+    const scalar invDx = 1.0/lattice_.dx();
     const bool stressHere = (update_ == updateType::USL);
     const scalar alpha = (transfer_ == transferType::FLIP ? flipRatio_ : 0);
-    shapeWeights sw;
 
     forAll(points_.x, p)
     {
-        const vector xl = latticeCoordinates(points_.x[p]);
-        shape_->weights(xl, points_.halfLength[p], nDim, sw);
+        const shapeWeights& sw = weights_[p];
 
         vector vPic(Zero), dv(Zero);
         tensor L(Zero);
@@ -552,13 +571,10 @@ void Foam::materialPointSoil::updateStresses
 )
 {
     const scalar invDx = 1.0/lattice_.dx();
-    const label nDim = lattice_.nDim();
-    shapeWeights sw;
 
     forAll(points_.x, p)
     {
-        const vector xl = latticeCoordinates(points_.x[p]);
-        shape_->weights(xl, points_.halfLength[p], nDim, sw);
+        const shapeWeights& sw = weights_[p];
         tensor L(Zero);
         sw.forEachNode
         (
@@ -608,19 +624,24 @@ bool Foam::materialPointSoil::clamp(vector& x) const
 
 void Foam::materialPointSoil::subStep(const scalar dt)
 {
+    // The weights of the points at the start of the sub-step serve every
+    // transfer of the sub-step (once per point, not per transfer)
+    computeWeights();
+
     clearGrid();
-    p2gMassMomentum();
+    const bool usf = (update_ == updateType::USF);
+    p2gMassMomentum(!usf);
     foldGhosts(gridMomentum_, true);
     gridVelocityFromMomentum(gridVelocityOld_);
     mirrorGhosts(gridVelocityOld_);
 
-    if (update_ == updateType::USF)
+    if (usf)
     {
         updateStresses(gridVelocityOld_, dt);
+        p2gForces();
     }
-
-    p2gForces();
     foldGhosts(gridForce_, false);
+
     if (localDamping_ > 0)
     {
         forAll(gridForce_, n)
@@ -647,8 +668,10 @@ void Foam::materialPointSoil::subStep(const scalar dt)
 
     if (update_ == updateType::MUSL)
     {
+        // The points have moved: new weights for the second mapping
+        computeWeights();
         clearGrid();
-        p2gMassMomentum();
+        p2gMassMomentum(false);
         foldGhosts(gridMomentum_, true);
         List<vector> vel(gridVelocity_.size());
         gridVelocityFromMomentum(vel);
@@ -839,7 +862,8 @@ void Foam::materialPointSoil::advance(const scalar deltaT)
 Foam::scalar Foam::materialPointSoil::memoryBytes() const
 {
     return
-        scalar(points_.size())*materialPoints::memoryPerPoint()
+        scalar(points_.size())
+       *(materialPoints::memoryPerPoint() + sizeof(shapeWeights))
       + scalar(lattice_.nBox())*(sizeof(scalar) + 4*sizeof(vector));
 }
 
