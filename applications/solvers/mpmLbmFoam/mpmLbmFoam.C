@@ -26,6 +26,11 @@ Description
 Usage
     \b mpmLbmFoam [OPTION]
 
+    Options:
+      - \par -estimate
+        Run a few steps, project the wall time and memory of the case and
+        of the case with dx halved and doubled, write nothing.
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -41,11 +46,25 @@ int main(int argc, char *argv[])
         " water, on one uniform mesh"
     );
 
+    argList::addBoolOption
+    (
+        "estimate",
+        "Run a few steps, print the projected wall time and memory of the"
+        " case and of the case with dx halved and doubled; write nothing"
+    );
+
     #include "setRootCase.H"
     #include "createTime.H"
     #include "createMesh.H"
 
     physicsScene scene(mesh);
+
+    if (args.found("estimate"))
+    {
+        scene.estimate();
+        Info<< "End\n" << endl;
+        return 0;
+    }
 
     Info<< "\nStarting time loop\n" << endl;
 

@@ -264,4 +264,55 @@ void Foam::physicsScene::summary() const
 }
 
 
+void Foam::physicsScene::estimate()
+{
+    Time& runTime = const_cast<Time&>(mesh_.time());
+    const clock::time_point t0 = clock::now();
+    label n = 0;
+    while (runTime.run() && n < 50)
+    {
+        ++runTime;
+        forAll(effects_, i)
+        {
+            effects_[i].evolve();
+        }
+        ++n;
+        bool enough = seconds(t0, clock::now()) > 3.0;
+        reduce(enough, orOp<bool>());
+        if (enough)
+        {
+            break;
+        }
+    }
+    const scalar wall = seconds(t0, clock::now());
+    const scalar perStep = wall/max(n, label(1));
+    scalar memory = 0;
+    forAll(effects_, i)
+    {
+        memory += effects_[i].memoryBytes();
+    }
+    const label D = lattice_->nDim();
+    const scalar nodesFactor = std::pow(2.0, D);
+
+    // Halving dx at a fixed lattice Mach number (acoustic scaling) halves
+    // the time step: nodes x 2^D, steps x 2. The soil's points and
+    // sub-steps scale alike (CFL). At fixed tau (diffusive scaling) the
+    // water needs 4 times the steps instead of 2.
+    const scalar total = perStep*nStepsTotal_;
+    Info<< nl << "Estimate from " << n << " steps (" << perStep
+        << " s per step)" << nl
+        << "    case as set up:  wall time " << total << " s ("
+        << total/3600 << " h), memory " << memory/1048576.0 << " MiB" << nl
+        << "    dx halved:       wall time " << total*nodesFactor*2 << " s"
+        << " at fixed lattice Mach (" << total*nodesFactor*4
+        << " s at fixed tau), memory " << memory*nodesFactor/1048576.0
+        << " MiB" << nl
+        << "    dx doubled:      wall time " << total/(nodesFactor*2) << " s"
+        << " at fixed lattice Mach (" << total/(nodesFactor*4)
+        << " s at fixed tau), memory " << memory/nodesFactor/1048576.0
+        << " MiB" << nl
+        << "    Nothing was written." << nl << endl;
+}
+
+
 // ************************************************************************* //
