@@ -31,7 +31,7 @@ Foam::collisionModels::regularized::regularized
 )
 :
     collisionModel(typeName, dict, vs),
-    recursive_(coeffs_.getOrDefault<bool>("recursive", true))
+    recursive_(coeffs_.getOrDefault<bool>("recursive", false))
 {}
 
 
