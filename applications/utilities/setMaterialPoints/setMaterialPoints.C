@@ -243,23 +243,38 @@ int main(int argc, char *argv[])
     // First region containing each point
     labelList region(candidates.size(), -1);
     labelList regionCount(nRegions, 0);
+    labelList insideCount(nRegions, 0);
     forAll(surfaces, r)
     {
         List<volumeType> vt;
         surfaces[r].getVolumeType(candidates, vt);
         forAll(vt, i)
         {
-            if (region[i] < 0 && vt[i] == volumeType::INSIDE)
+            if (vt[i] == volumeType::INSIDE)
             {
-                region[i] = r;
-                ++regionCount[r];
+                ++insideCount[r];
+                if (region[i] < 0)
+                {
+                    region[i] = r;
+                    ++regionCount[r];
+                }
             }
         }
     }
 
     forAll(regionCount, r)
     {
-        if (returnReduce(regionCount[r], sumOp<label>()) == 0)
+        if
+        (
+            returnReduce(regionCount[r], sumOp<label>()) == 0
+         && returnReduce(insideCount[r], sumOp<label>()) > 0
+        )
+        {
+            WarningInFunction
+                << "Region " << regionEntries[r].keyword() << " lies entirely"
+                << " inside regions listed before it: it gets no points" << endl;
+        }
+        else if (returnReduce(regionCount[r], sumOp<label>()) == 0)
         {
             FatalIOErrorInFunction(regionEntries[r].dict())
                 << "Region " << regionEntries[r].keyword() << " contains no"
