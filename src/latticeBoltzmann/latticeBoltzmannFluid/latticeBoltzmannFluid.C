@@ -445,7 +445,33 @@ void Foam::latticeBoltzmannFluid::enableForceField()
         Fx_.setSize(nBox, 0.0);
         Fy_.setSize(nBox, 0.0);
         Fz_.setSize(nBox, 0.0);
+        relaxK_.setSize(nBox, 0.0);
+        relaxUx_.setSize(nBox, 0.0);
+        relaxUy_.setSize(nBox, 0.0);
+        relaxUz_.setSize(nBox, 0.0);
     }
+}
+
+
+Foam::vector Foam::latticeBoltzmannFluid::nodeForce
+(
+    const label n,
+    const scalar rho,
+    const vector& jStar
+) const
+{
+    // jStar = j + F with F = F_ext + rho g + k (rho U_r - j): solve for j
+    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+    vector Fext = rho*g;
+    if (Fx_.empty())
+    {
+        return Fext;
+    }
+    Fext += vector(Fx_[n], Fy_[n], Fz_[n]);
+    const scalar k = relaxK_[n];
+    const vector Ur(relaxUx_[n], relaxUy_[n], relaxUz_[n]);
+    const vector j = (jStar - k*rho*Ur - Fext)/(1 - k);
+    return jStar - j;
 }
 
 
@@ -473,6 +499,10 @@ void Foam::latticeBoltzmannFluid::step()
         a.Fx = Fx_.cdata();
         a.Fy = Fy_.cdata();
         a.Fz = Fz_.cdata();
+        a.relaxK = relaxK_.cdata();
+        a.relaxUx = relaxUx_.cdata();
+        a.relaxUy = relaxUy_.cdata();
+        a.relaxUz = relaxUz_.cdata();
     }
     a.omega = 1.0/units_.tau();
     a.smagorinsky = smagorinsky_;
@@ -506,7 +536,7 @@ Foam::scalar Foam::latticeBoltzmannFluid::memoryBytes() const
 {
     return returnReduce
     (
-        scalar(sizeof(scalar))*(fA_.size() + fB_.size() + 3*Fx_.size()),
+        scalar(sizeof(scalar))*(fA_.size() + fB_.size() + 7*Fx_.size()),
         sumOp<scalar>()
     );
 }
@@ -543,11 +573,7 @@ void Foam::latticeBoltzmannFluid::updateFields()
             j += fq*vector(c[q]);
         }
         // Post-collision momentum is rho u + F/2
-        vector F = rho*g;
-        if (Fx_.size())
-        {
-            F += vector(Fx_[n], Fy_[n], Fz_[n]);
-        }
+        const vector F = nodeForce(n, rho, j);
         U[celli] = units_.toPhysical((j - 0.5*F)/rho);
         p[celli] = units_.pressure(rho);
         rhoPhys[celli] = rho*units_.rho0();
@@ -556,6 +582,39 @@ void Foam::latticeBoltzmannFluid::updateFields()
     U_.correctBoundaryConditions();
     p_.correctBoundaryConditions();
     rho_.correctBoundaryConditions();
+}
+
+
+void Foam::latticeBoltzmannFluid::nodalVelocity
+(
+    List<vector>& u,
+    const bool carried
+) const
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& f = current();
+    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+
+    u.setSize(nBox);
+    u = Zero;
+    for (const label n : lattice_.cellNode())
+    {
+        scalar rho = 0;
+        vector j(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            const scalar fq = f[q*nBox + n];
+            rho += fq;
+            j += fq*vector(c[q]);
+        }
+        if (!carried)
+        {
+            j -= 0.5*nodeForce(n, rho, j);
+        }
+        u[n] = units_.toPhysical(j/rho);
+    }
 }
 
 

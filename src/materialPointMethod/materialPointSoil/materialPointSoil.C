@@ -868,6 +868,45 @@ Foam::scalar Foam::materialPointSoil::memoryBytes() const
 }
 
 
+void Foam::materialPointSoil::nodalFields
+(
+    scalarList& phi,
+    List<vector>& velocity
+)
+{
+    const label nBox = lattice_.nBox();
+    phi.setSize(nBox);
+    velocity.setSize(nBox);
+    phi = 0;
+    velocity = Zero;
+    scalarList mass(nBox, 0.0);
+
+    computeWeights();
+    forAll(points_.x, p)
+    {
+        const scalar Vs = points_.V[p]*(1 - points_.porosity[p]);
+        const scalar mp = points_.m[p];
+        const vector& vp = points_.v[p];
+        weights_[p].forEachNode
+        (
+            [&](label i, label j, label k, scalar N, const vector&)
+            {
+                const label n = lattice_.node(i, j, k);
+                phi[n] += N*Vs;
+                mass[n] += N*mp;
+                velocity[n] += N*mp*vp;
+            }
+        );
+    }
+    const scalar invV = 1.0/lattice_.cellVolume();
+    forAll(phi, n)
+    {
+        phi[n] = min(phi[n]*invV, 0.99);
+        velocity[n] = mass[n] > VSMALL ? velocity[n]/mass[n] : Zero;
+    }
+}
+
+
 Foam::scalar Foam::materialPointSoil::kineticEnergy() const
 {
     scalar e = 0;

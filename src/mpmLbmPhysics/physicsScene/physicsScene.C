@@ -13,6 +13,7 @@ License
 
 #include "physicsScene.H"
 #include "Time.H"
+#include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -149,12 +150,35 @@ Foam::physicsScene::physicsScene(fvMesh& mesh)
     // (cubic B-splines): the shared lattice is built wide enough for both
     lattice(has("soil") ? 2 : 1);
 
+    // The water and the soil first: the couplings use them
     effects_.setSize(names_.size());
-    forAll(names_, i)
+    for (const bool phases : {true, false})
     {
-        effects_.set(i, physicsEffect::New(names_[i], *this, dict_));
+        forAll(names_, i)
+        {
+            const bool isPhase = (names_[i] == "fluid" || names_[i] == "soil");
+            if (isPhase == phases)
+            {
+                effects_.set(i, physicsEffect::New(names_[i], *this, dict_));
+            }
+        }
     }
     checkRequirements();
+
+    // Evolution order by stage (stable)
+    {
+        labelList stages(effects_.size());
+        forAll(effects_, i)
+        {
+            stages[i] = effects_[i].stage();
+        }
+        evolveOrder_ = identity(effects_.size());
+        std::stable_sort
+        (
+            evolveOrder_.begin(), evolveOrder_.end(),
+            [&stages](label a, label b) { return stages[a] < stages[b]; }
+        );
+    }
     effectTime_.setSize(effects_.size(), 0);
 
     // What the run will cost
@@ -205,7 +229,7 @@ const Foam::latticeMesh& Foam::physicsScene::lattice(const label haloWidth)
 
 void Foam::physicsScene::evolve()
 {
-    forAll(effects_, i)
+    for (const label i : evolveOrder_)
     {
         const clock::time_point t0 = clock::now();
         effects_[i].evolve();
@@ -272,7 +296,7 @@ void Foam::physicsScene::estimate()
     while (runTime.run() && n < 50)
     {
         ++runTime;
-        forAll(effects_, i)
+        for (const label i : evolveOrder_)
         {
             effects_[i].evolve();
         }

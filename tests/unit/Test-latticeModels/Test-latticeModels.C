@@ -209,6 +209,7 @@ static scalarList collideOne
     labelList offset(Q, 0);
     label runs[1][2] = {{0, 1}};
     scalarList Fx(1, F.x()), Fy(1, F.y()), Fz(1, F.z());
+    const scalarList noRelax(1, 0.0);
 
     lbmKernelArgs a;
     a.fOld = f.cdata();
@@ -220,6 +221,10 @@ static scalarList collideOne
     a.Fx = Fx.cdata();
     a.Fy = Fy.cdata();
     a.Fz = Fz.cdata();
+    a.relaxK = noRelax.cdata();
+    a.relaxUx = noRelax.cdata();
+    a.relaxUy = noRelax.cdata();
+    a.relaxUz = noRelax.cdata();
     a.omega = omega;
     a.smagorinsky = smagorinsky;
     lbmKernelStats stats;
