@@ -555,7 +555,6 @@ void Foam::latticeBoltzmannFluid::updateFields()
     const List<labelVector>& c = velocitySet_->c();
     const labelList& cellNode = lattice_.cellNode();
     const scalarList& f = current();
-    const vector g = units_.accelerationToLattice(bodyAcceleration_);
 
     vectorField& U = U_.primitiveFieldRef();
     scalarField& p = p_.primitiveFieldRef();
@@ -595,7 +594,6 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
     const label nBox = lattice_.nBox();
     const List<labelVector>& c = velocitySet_->c();
     const scalarList& f = current();
-    const vector g = units_.accelerationToLattice(bodyAcceleration_);
 
     u.setSize(nBox);
     u = Zero;
