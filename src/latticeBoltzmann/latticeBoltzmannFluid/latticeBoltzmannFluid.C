@@ -446,32 +446,44 @@ void Foam::latticeBoltzmannFluid::enableForceField()
         Fy_.setSize(nBox, 0.0);
         Fz_.setSize(nBox, 0.0);
         relaxK_.setSize(nBox, 0.0);
+        relaxS_.setSize(nBox, 1.0);
         relaxUx_.setSize(nBox, 0.0);
         relaxUy_.setSize(nBox, 0.0);
         relaxUz_.setSize(nBox, 0.0);
+        dragX_.setSize(nBox, 0.0);
+        dragY_.setSize(nBox, 0.0);
+        dragZ_.setSize(nBox, 0.0);
     }
+}
+
+
+Foam::scalarList& Foam::latticeBoltzmannFluid::porosity()
+{
+    enableForceField();
+    if (porosity_.empty())
+    {
+        porosity_.setSize(lattice_.nBox(), 1.0);
+    }
+    return porosity_;
 }
 
 
 Foam::vector Foam::latticeBoltzmannFluid::nodeForce
 (
     const label n,
-    const scalar rho,
-    const vector& jStar
+    const scalar rho
 ) const
 {
-    // jStar = j + F with F = F_ext + rho g + k (rho U_r - j): solve for j
     const vector g = units_.accelerationToLattice(bodyAcceleration_);
-    vector Fext = rho*g;
     if (Fx_.empty())
     {
-        return Fext;
+        return rho*g;
     }
-    Fext += vector(Fx_[n], Fy_[n], Fz_[n]);
-    const scalar k = relaxK_[n];
-    const vector Ur(relaxUx_[n], relaxUy_[n], relaxUz_[n]);
-    const vector j = (jStar - k*rho*Ur - Fext)/(1 - k);
-    return jStar - j;
+    const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
+    return
+        eps*rho*g
+      + vector(Fx_[n], Fy_[n], Fz_[n])
+      + vector(dragX_[n], dragY_[n], dragZ_[n]);
 }
 
 
@@ -500,6 +512,14 @@ void Foam::latticeBoltzmannFluid::step()
         a.Fy = Fy_.cdata();
         a.Fz = Fz_.cdata();
         a.relaxK = relaxK_.cdata();
+        a.relaxS = relaxS_.cdata();
+        a.dragX = dragX_.data();
+        a.dragY = dragY_.data();
+        a.dragZ = dragZ_.data();
+        if (porosity_.size())
+        {
+            a.porosity = porosity_.cdata();
+        }
         a.relaxUx = relaxUx_.cdata();
         a.relaxUy = relaxUy_.cdata();
         a.relaxUz = relaxUz_.cdata();
@@ -526,6 +546,25 @@ void Foam::latticeBoltzmannFluid::step()
 }
 
 
+Foam::vector Foam::latticeBoltzmannFluid::momentum() const
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& f = current();
+    vector j(Zero);
+    for (const label n : lattice_.cellNode())
+    {
+        for (label q = 0; q < Q; ++q)
+        {
+            j += f[q*nBox + n]*vector(c[q]);
+        }
+    }
+    reduce(j, sumOp<vector>());
+    return j*units_.rho0()*units_.velocityScale()*lattice_.cellVolume();
+}
+
+
 Foam::scalar Foam::latticeBoltzmannFluid::massDefect() const
 {
     return returnReduce(stats_.mass, sumOp<scalar>())/mass0_ - 1.0;
@@ -536,7 +575,7 @@ Foam::scalar Foam::latticeBoltzmannFluid::memoryBytes() const
 {
     return returnReduce
     (
-        scalar(sizeof(scalar))*(fA_.size() + fB_.size() + 7*Fx_.size()),
+        scalar(sizeof(scalar))*(fA_.size() + fB_.size() + 11*Fx_.size() + porosity_.size()),
         sumOp<scalar>()
     );
 }
@@ -571,10 +610,12 @@ void Foam::latticeBoltzmannFluid::updateFields()
             rho += fq;
             j += fq*vector(c[q]);
         }
-        // Post-collision momentum is rho u + F/2
-        const vector F = nodeForce(n, rho, j);
+        // Post-collision momentum is rho u + F/2 (u superficial in a
+        // porous medium, p the intrinsic pressure c_s^2 rho/eps)
+        const vector F = nodeForce(n, rho);
         U[celli] = units_.toPhysical((j - 0.5*F)/rho);
-        p[celli] = units_.pressure(rho);
+        p[celli] =
+            units_.pressure(porosity_.size() ? rho/porosity_[n] : rho);
         rhoPhys[celli] = rho*units_.rho0();
     }
 
@@ -609,7 +650,7 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
         }
         if (!carried)
         {
-            j -= 0.5*nodeForce(n, rho, j);
+            j -= 0.5*nodeForce(n, rho);
         }
         u[n] = units_.toPhysical(j/rho);
     }

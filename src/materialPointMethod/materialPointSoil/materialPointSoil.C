@@ -339,9 +339,48 @@ void Foam::materialPointSoil::clearGrid()
 }
 
 
+void Foam::materialPointSoil::checkPeriodicReach() const
+{
+    // The soil's grid does not wrap around cyclic patches: a point whose
+    // shape function would reach across one is refused (the water may be
+    // periodic around a soil body that stays clear of the seam)
+    const labelVector& N = lattice_.globalN();
+    const vector& o = lattice_.origin();
+    const scalar dx = lattice_.dx();
+    const scalar clear = (shape_->reach() + 1)*dx;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!lattice_.periodic()[d])
+        {
+            continue;
+        }
+        forAll(points_.x, p)
+        {
+            const scalar x = points_.x[p][d];
+            if (x < o[d] + clear || x > o[d] + N[d]*dx - clear)
+            {
+                FatalErrorInFunction
+                    << "Material point " << p << " at " << points_.x[p]
+                    << " is within " << clear << " m of the cyclic patches"
+                    << " normal to " << vector::componentNames[d]
+                    << " at time " << mesh_.time().timeName() << " s" << nl
+                    << "    The soil's grid does not wrap around cyclic"
+                    << " patches: keep the soil " << shape_->reach() + 1
+                    << " cells clear of them, or use walls"
+                    << exit(FatalError);
+            }
+        }
+    }
+}
+
+
 void Foam::materialPointSoil::computeWeights()
 {
     const label nDim = lattice_.nDim();
+    if (periodic_)
+    {
+        checkPeriodicReach();
+    }
     weights_.setSize(points_.size());
     forAll(points_.x, p)
     {
@@ -364,6 +403,7 @@ void Foam::materialPointSoil::p2gMassMomentum(const bool withForces)
     const scalar ramp =
         (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
     const vector g = ramp*gravity_;
+    const vector* fExt = pointForce_.size() ? pointForce_.cdata() : nullptr;
 
     forAll(points_.x, p)
     {
@@ -374,7 +414,7 @@ void Foam::materialPointSoil::p2gMassMomentum(const bool withForces)
         const tensor& Cp = points_.C[p];
         const symmTensor& s = points_.sigma[p];
         const scalar Vp = points_.V[p];
-        const vector mg = mp*g;
+        const vector mg = fExt ? mp*g + fExt[p] : mp*g;
         sw.forEachNode
         (
             [&](label i, label j, label k, scalar N, const vector& gradN)
@@ -456,13 +496,14 @@ void Foam::materialPointSoil::p2gForces()
     const scalar ramp =
         (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
     const vector g = ramp*gravity_;
+    const vector* fExt = pointForce_.size() ? pointForce_.cdata() : nullptr;
 
     forAll(points_.x, p)
     {
         const shapeWeights& sw = weights_[p];
         const symmTensor& s = points_.sigma[p];
         const scalar Vp = points_.V[p];
-        const vector mg = points_.m[p]*g;
+        const vector mg = fExt ? points_.m[p]*g + fExt[p] : points_.m[p]*g;
         sw.forEachNode
         (
             [&](label i, label j, label k, scalar N, const vector& gradN)
@@ -717,6 +758,10 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     gravityRamp_(dict_.getOrDefault<scalar>("gravityRamp", 0)),
     localDamping_(dict_.getOrDefault<scalar>("localDamping", 0)),
     time_(mesh_.time().value()),
+    periodic_
+    (
+        lattice.periodic()[0] || lattice.periodic()[1] || lattice.periodic()[2]
+    ),
     nClamped_(0),
     nSubSteps_(0),
     subDt_(0),
@@ -728,12 +773,6 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
             << "The soil (material point method) runs serially in this"
             << " version: run without -parallel, or without the soil effect"
             << exit(FatalError);
-    }
-    if (lattice_.periodic()[0] || lattice_.periodic()[1] || lattice_.periodic()[2])
-    {
-        FatalErrorInFunction
-            << "The soil does not support cyclic (periodic) patches yet:"
-            << " use walls" << exit(FatalError);
     }
     if (lattice_.haloWidth() < shape_->reach())
     {
@@ -879,7 +918,9 @@ void Foam::materialPointSoil::nodalFields
     velocity.setSize(nBox);
     phi = 0;
     velocity = Zero;
-    scalarList mass(nBox, 0.0);
+    scalarList& mass = nodeMass_;
+    mass.setSize(nBox);
+    mass = 0;
 
     computeWeights();
     forAll(points_.x, p)
@@ -904,6 +945,56 @@ void Foam::materialPointSoil::nodalFields
         phi[n] = min(phi[n]*invV, 0.99);
         velocity[n] = mass[n] > VSMALL ? velocity[n]/mass[n] : Zero;
     }
+}
+
+
+void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
+{
+    // Each node's force goes to the points in proportion to the mass they
+    // gave it, N m_p/m_n, with the weights of nodalFields (the points have
+    // not moved since): the shares of a node sum to one, so the points
+    // receive exactly the total force, and through P2G, the grid update
+    // and G2P the impulse dt sum(f) reaches the points' momentum exactly
+    // (partition of unity)
+    if (pointForce_.size() != points_.size())
+    {
+        pointForce_.setSize(points_.size());
+        pointForce_ = Zero;
+    }
+    forAll(points_.x, p)
+    {
+        const scalar mp = points_.m[p];
+        vector f(Zero);
+        weights_[p].forEachNode
+        (
+            [&](label i, label j, label k, scalar N, const vector&)
+            {
+                const label n = lattice_.node(i, j, k);
+                if (nodeMass_[n] > 0)
+                {
+                    f += (N*mp/nodeMass_[n])*nodeForce[n];
+                }
+            }
+        );
+        pointForce_[p] += f;
+    }
+}
+
+
+void Foam::materialPointSoil::clearPointForces()
+{
+    pointForce_ = Zero;
+}
+
+
+Foam::vector Foam::materialPointSoil::momentum() const
+{
+    vector sum(Zero);
+    forAll(points_.v, p)
+    {
+        sum += points_.m[p]*points_.v[p];
+    }
+    return sum;
 }
 
 

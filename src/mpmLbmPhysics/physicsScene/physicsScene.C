@@ -167,17 +167,29 @@ Foam::physicsScene::physicsScene(fvMesh& mesh)
 
     // Evolution order by stage (stable)
     {
-        labelList stages(effects_.size());
+        DynamicList<labelPair> order;
+        DynamicList<label> stages;
         forAll(effects_, i)
         {
-            stages[i] = effects_[i].stage();
+            order.append(labelPair(i, 0));
+            stages.append(effects_[i].stage());
+            if (effects_[i].lateStage() >= 0)
+            {
+                order.append(labelPair(i, 1));
+                stages.append(effects_[i].lateStage());
+            }
         }
-        evolveOrder_ = identity(effects_.size());
+        labelList idx(identity(order.size()));
         std::stable_sort
         (
-            evolveOrder_.begin(), evolveOrder_.end(),
+            idx.begin(), idx.end(),
             [&stages](label a, label b) { return stages[a] < stages[b]; }
         );
+        evolveOrder_.setSize(order.size());
+        forAll(idx, k)
+        {
+            evolveOrder_[k] = order[idx[k]];
+        }
     }
     effectTime_.setSize(effects_.size(), 0);
 
@@ -229,10 +241,24 @@ const Foam::latticeMesh& Foam::physicsScene::lattice(const label haloWidth)
 
 void Foam::physicsScene::evolve()
 {
-    for (const label i : evolveOrder_)
+    for (const labelPair& ip : evolveOrder_)
+    {
+        const label i = ip.first();
+        const clock::time_point t0 = clock::now();
+        if (ip.second() == 0)
+        {
+            effects_[i].evolve();
+        }
+        else
+        {
+            effects_[i].evolveLate();
+        }
+        effectTime_[i] += seconds(t0, clock::now());
+    }
+    forAll(effects_, i)
     {
         const clock::time_point t0 = clock::now();
-        effects_[i].evolve();
+        effects_[i].endStep();
         effectTime_[i] += seconds(t0, clock::now());
     }
     ++nSteps_;
@@ -296,9 +322,16 @@ void Foam::physicsScene::estimate()
     while (runTime.run() && n < 50)
     {
         ++runTime;
-        for (const label i : evolveOrder_)
+        for (const labelPair& ip : evolveOrder_)
         {
-            effects_[i].evolve();
+            if (ip.second() == 0)
+            {
+                effects_[ip.first()].evolve();
+            }
+            else
+            {
+                effects_[ip.first()].evolveLate();
+            }
         }
         ++n;
         bool enough = seconds(t0, clock::now()) > 3.0;

@@ -79,7 +79,8 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(scene.effect<physicsEffects::soil>("soil").mpm()),
     model_(dragModel::New(dragDict(dict_, fluid_))),
-    maxForce_(0)
+    maxForce_(0),
+    writeMomentum_(false)
 {
     const word type(dict_.get<word>("drag"));
     if (!couplingTypeNames.found(type))
@@ -89,22 +90,64 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
             << couplingTypeNames.sortedToc() << exit(FatalIOError);
     }
     coupling_ = couplingTypeNames[type];
-    if (coupling_ == couplingType::twoWay)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "drag twoWay is not available yet in this version: use oneWay"
-            << " (the soil moves the water)" << exit(FatalIOError);
-    }
     fluid_.enableForceField();
 
-    Info<< "Drag between soil and water: " << couplingTypeNames[coupling_]
-        << nl;
+    if (twoWay())
+    {
+        scene.effect<physicsEffects::soil>("soil").advanceAfterWater();
+        nodeForce_.setSize(fluid_.lattice().nBox(), Zero);
+        writeMomentum_ = dict_.getOrDefault<bool>("writeMomentum", false);
+        if (writeMomentum_)
+        {
+            const fileName dir
+            (
+                scene.mesh().time().globalPath()/"postProcessing"
+               /"momentumBalance"
+            );
+            if (Pstream::master())
+            {
+                mkDir(dir);
+                momentumFile_.reset(new OFstream(dir/"momentum.dat"));
+                momentumFile_()
+                    << "# time waterX waterY waterZ soilX soilY soilZ"
+                    << " totalX totalY totalZ [kg m/s]" << nl;
+                momentumFile_().precision(17);
+            }
+            writeMomentum();
+        }
+    }
+
+    Info<< "Drag between soil and water: " << couplingTypeNames[coupling_];
+    if (twoWay())
+    {
+        Info<< " (the soil advances after the water and receives its"
+            << " reaction)";
+    }
+    Info<< nl;
     model_->report(Info);
     Info<< endl;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::physicsEffects::drag::writeMomentum()
+{
+    const vector water = fluid_.momentum();
+    const vector soil = soil_.momentum();
+    if (momentumFile_.valid())
+    {
+        OFstream& os = momentumFile_();
+        os  << scene_.mesh().time().value();
+        for (const vector& v : {water, soil, water + soil})
+        {
+            os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
+        }
+        os  << nl;
+        os.flush();
+    }
+}
+
 
 void Foam::physicsEffects::drag::evolve()
 {
@@ -114,31 +157,90 @@ void Foam::physicsEffects::drag::evolve()
     const lbmUnits& units = fluid_.units();
     const scalar dt = units.dt();
     const scalar rhoF = units.rho0();
-    scalarList& k = fluid_.relaxCoefficient();
+    const scalar Vnode = fluid_.lattice().cellVolume();
+    const bool porous = fluid_.porous();
+    const scalarList& soilMass = soil_.nodeMass();
+
+    scalarList& kappa = fluid_.relaxCoefficient();
+    scalarList& s = fluid_.relaxS();
     scalarList& Ux = fluid_.relaxUx();
     scalarList& Uy = fluid_.relaxUy();
     scalarList& Uz = fluid_.relaxUz();
 
-    // The lattice relaxes each node's streamed momentum j towards rho v_s by
-    // the implicit fraction a/(1 + a) in the collision itself (no lag
-    // behind the streaming, which made an explicit force oscillate)
     maxForce_ = 0;
     for (const label n : fluid_.lattice().cellNode())
     {
+        // Porous flow: the water sees the soil's porosity
+        const scalar eps = 1 - phi_[n];
+        if (porous)
+        {
+            fluid_.porosity()[n] = eps;
+        }
         if (phi_[n] <= 0)
         {
-            k[n] = 0;
+            kappa[n] = 0;
+            s[n] = 1;
+            Ux[n] = Uy[n] = Uz[n] = 0;
             continue;
         }
-        const vector slip = soilVelocity_[n] - fluidVelocity_[n];
+
+        // The water's mass per volume and intrinsic velocity (the lattice's
+        // is superficial in porous flow)
+        const scalar mF = porous ? eps*rhoF : rhoF;
+        const vector vF = porous ? fluidVelocity_[n]/eps : fluidVelocity_[n];
+        const vector slip = soilVelocity_[n] - vF;
         const scalar beta = model_->beta(phi_[n], mag(slip));
-        const scalar a = beta*dt/rhoF;
-        k[n] = a/(1 + a);
-        const vector vs = units.toLattice(soilVelocity_[n]);
-        Ux[n] = vs.x();
-        Uy[n] = vs.y();
-        Uz[n] = vs.z();
-        maxForce_ = max(maxForce_, (rhoF/dt)*k[n]*mag(slip));
+        const scalar a = beta*dt/mF;
+
+        scalar k;
+        if (twoWay())
+        {
+            // Relative velocity decays by exp(-beta dt (1/mS + 1/mF)); the
+            // water takes the soil's share mS/(mS + mF) of it
+            const scalar mS = soilMass[n]/Vnode;
+            k = -std::expm1(-a*(1 + mF/mS))*mS/(mS + mF);
+        }
+        else
+        {
+            k = -std::expm1(-a);
+        }
+        kappa[n] = k;
+        s[n] = a > SMALL ? k/a : 1;
+
+        const vector Ur =
+            units.toLattice(porous ? eps*soilVelocity_[n] : soilVelocity_[n]);
+        Ux[n] = Ur.x();
+        Uy[n] = Ur.y();
+        Uz[n] = Ur.z();
+        maxForce_ = max(maxForce_, beta*mag(slip));
+    }
+}
+
+
+void Foam::physicsEffects::drag::evolveLate()
+{
+    // The impulse density the lattice gave the water at each node this
+    // step, reversed, as a force on the node over the step [N]
+    const lbmUnits& units = fluid_.units();
+    const scalar toForce =
+        fluid_.lattice().cellVolume()/units.forceDensityToLattice();
+    nodeForce_ = Zero;
+    for (const label n : fluid_.lattice().cellNode())
+    {
+        if (phi_[n] > 0)
+        {
+            nodeForce_[n] = -toForce*fluid_.dragImpulse(n);
+        }
+    }
+    soil_.addNodeForces(nodeForce_);
+}
+
+
+void Foam::physicsEffects::drag::endStep()
+{
+    if (writeMomentum_)
+    {
+        writeMomentum();
     }
 }
 
@@ -147,7 +249,7 @@ Foam::scalar Foam::physicsEffects::drag::memoryBytes() const
 {
     return
         scalar(fluid_.lattice().nBox())
-       *(sizeof(scalar) + 2*sizeof(vector) + 3*sizeof(scalar));
+       *(sizeof(scalar) + (twoWay() ? 3 : 2)*sizeof(vector));
 }
 
 

@@ -28,13 +28,17 @@ namespace physicsEffects
 Foam::physicsEffects::soil::soil(physicsScene& scene)
 :
     physicsEffect(scene),
-    mpm_(scene.lattice(2))
+    mpm_(scene.lattice(2)),
+    afterWater_(false)
 {}
 
 
 void Foam::physicsEffects::soil::evolve()
 {
     mpm_.advance(scene_.mesh().time().deltaTValue());
+
+    // The couplings' forces on the points held for this step only
+    mpm_.clearPointForces();
 }
 
 

@@ -1,0 +1,178 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "porousFlowEffect.H"
+#include "physicsScene.H"
+#include "fluidEffect.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace physicsEffects
+{
+    defineTypeNameAndDebug(porousFlow, 0);
+    addToRunTimeSelectionTable(physicsEffect, porousFlow, scene);
+}
+}
+
+const Foam::Enum<Foam::physicsEffects::porousFlow::mediumType>
+Foam::physicsEffects::porousFlow::mediumTypeNames
+({
+    { mediumType::soil, "soil" },
+    { mediumType::fixed, "fixed" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
+:
+    physicsEffect(scene),
+    dict_
+    (
+        IOobject
+        (
+            "porousFlowProperties",
+            scene.mesh().time().constant(),
+            scene.mesh(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    medium_(mediumType::soil),
+    fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
+    porosity_(1),
+    permeability_(GREAT),
+    forchheimer_(0)
+{
+    const word type(dict_.get<word>("medium"));
+    if (!mediumTypeNames.found(type))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "medium " << type << " is not allowed: choose one of "
+            << mediumTypeNames.sortedToc() << exit(FatalIOError);
+    }
+    medium_ = mediumTypeNames[type];
+
+    if (fluid_.smagorinsky() > 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "porousFlow does not combine with the Smagorinsky sub-grid"
+            << " model (smagorinskyConstant " << fluid_.smagorinsky()
+            << " in fluidProperties): set it to 0" << exit(FatalIOError);
+    }
+
+    Info<< "Porous flow (Guo & Zhao 2002): medium " << type;
+    if (medium_ == mediumType::fixed)
+    {
+        if (scene.has("soil"))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "medium fixed is a rigid matrix for a scene without soil:"
+                << " with the soil in the scene use medium soil (its"
+                << " porosity and drag)" << exit(FatalIOError);
+        }
+        const dictionary& coeffs = dict_.subDict("fixedCoeffs");
+        porosity_ = coeffs.get<scalar>("porosity");
+        permeability_ = coeffs.get<scalar>("permeability");
+        forchheimer_ = coeffs.getOrDefault<scalar>("Forchheimer", 0);
+        if (!(porosity_ > 0 && porosity_ <= 1))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "porosity " << porosity_ << " is not allowed: the fluid"
+                << " fraction must lie in (0, 1]" << exit(FatalIOError);
+        }
+        if (!(permeability_ > 0))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "permeability " << permeability_ << " is not allowed: it"
+                << " must be > 0 [m2]" << exit(FatalIOError);
+        }
+        if (!(forchheimer_ >= 0))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Forchheimer " << forchheimer_ << " is not allowed: it"
+                << " must be >= 0" << exit(FatalIOError);
+        }
+        fluid_.porosity() = porosity_;
+        const scalar H = fluid_.lattice().dx();
+        Info<< ", porosity " << porosity_ << ", permeability "
+            << permeability_ << " m2 (Darcy number K/dx^2 "
+            << permeability_/sqr(H) << "), Forchheimer " << forchheimer_;
+        setResistance();
+    }
+    else
+    {
+        // The drag maps the soil's porosity onto the lattice each step
+        fluid_.porosity();
+        Info<< ": porosity 1 - phi of the soil, resistance of the drag";
+    }
+    Info<< nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::wordList Foam::physicsEffects::porousFlow::requires() const
+{
+    if (medium_ == mediumType::soil)
+    {
+        return wordList({"fluid", "soil", "drag"});
+    }
+    return wordList({"fluid"});
+}
+
+
+void Foam::physicsEffects::porousFlow::setResistance()
+{
+    const lbmUnits& units = fluid_.units();
+    const scalar dt = units.dt();
+    const scalar darcy = porosity_*units.nu()/permeability_;
+    const scalar forch =
+        porosity_*forchheimer_/std::sqrt(permeability_);
+
+    scalarList& kappa = fluid_.relaxCoefficient();
+    scalarList& s = fluid_.relaxS();
+    if (forch > 0)
+    {
+        fluid_.nodalVelocity(velocity_, true);
+    }
+    for (const label n : fluid_.lattice().cellNode())
+    {
+        const scalar a =
+            dt*(darcy + (forch > 0 ? forch*mag(velocity_[n]) : 0));
+        kappa[n] = -std::expm1(-a);
+        s[n] = a > SMALL ? kappa[n]/a : 1;
+    }
+    // The matrix is at rest: the relaxation targets stay zero
+}
+
+
+void Foam::physicsEffects::porousFlow::evolve()
+{
+    if (medium_ == mediumType::fixed && forchheimer_ > 0)
+    {
+        setResistance();
+    }
+}
+
+
+Foam::scalar Foam::physicsEffects::porousFlow::memoryBytes() const
+{
+    return
+        scalar(fluid_.lattice().nBox())
+       *(sizeof(scalar) + (forchheimer_ > 0 ? sizeof(vector) : 0));
+}
+
+
+// ************************************************************************* //
