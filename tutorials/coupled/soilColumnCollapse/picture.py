@@ -1,0 +1,242 @@
+#------------------------------------------------------------------------------
+#   mpmLbmFoam: coupled material point / lattice Boltzmann soil-water solver
+#------------------------------------------------------------------------------
+# Script
+#     tutorials/coupled/soilColumnCollapse/picture.py
+#
+# Description
+#     The paper's Fig. 5 through ParaView's OpenFOAM reader: the water's
+#     velocity magnitude as colour (one colour range for all panels) and the
+#     soil's material points on top, at the requested times (default 0, 3 and
+#     6 s; the nearest written time is taken, each once). Run with pvpython
+#     under a virtual X server:
+#
+#         xvfb-run -a pvpython picture.py [--case DIR] [--times 0 3 6]
+#             [--png soilColumnCollapse.png] [--width 900]
+#
+#     Writes one PNG per time (<png stem>_t<time>.png) and the panels stacked
+#     top to bottom in <png>. A 3D case is shown as the slice through the
+#     middle of the tank with all points projected on it. Prints the times,
+#     the colour range and the files; exits 1 if nothing could be rendered.
+#------------------------------------------------------------------------------
+
+import argparse
+import os
+import sys
+
+
+def parseArgs(argv):
+    p = argparse.ArgumentParser(prog='picture.py')
+    p.add_argument('--case', default='.')
+    p.add_argument('--times', type=float, nargs='+', default=[0.0, 3.0, 6.0])
+    p.add_argument('--png', default='soilColumnCollapse.png')
+    p.add_argument('--width', type=int, default=900)
+    return p.parse_args(argv)
+
+
+def fetchBlocks(reader, time):
+    """{'/internalMesh': dataset, '/lagrangian/materialPoints': dataset}"""
+    from paraview import servermanager
+    reader.UpdatePipeline(time)
+    found = {}
+
+    def walk(ds, prefix):
+        if ds is None:
+            return
+        if ds.IsA('vtkMultiBlockDataSet'):
+            for i in range(ds.GetNumberOfBlocks()):
+                name = None
+                if ds.HasMetaData(i):
+                    name = ds.GetMetaData(i).Get(ds.NAME())
+                walk(ds.GetBlock(i), prefix + '/' + (name or 'block%d' % i))
+        else:
+            found[prefix] = ds
+    walk(servermanager.Fetch(reader), '')
+    return found
+
+
+def speedRange(mesh):
+    import numpy
+    from vtk.util.numpy_support import vtk_to_numpy
+    array = mesh.GetCellData().GetArray('U')
+    if array is None:
+        return None
+    u = vtk_to_numpy(array).reshape(-1, 3)
+    s = numpy.sqrt((u**2).sum(axis=1))
+    return float(s.max()) if numpy.isfinite(s).all() else None
+
+
+def timeName(t):
+    return ('%.6g' % t).replace('.', 'p')
+
+
+def main(argv):
+    args = parseArgs(argv)
+    caseDir = os.path.abspath(args.case)
+    foamFile = os.path.join(caseDir, 'case.foam')
+    if not os.path.exists(foamFile):
+        open(foamFile, 'a').close()
+
+    import paraview.simple as pv
+
+    reader = pv.OpenFOAMReader(FileName=foamFile)
+    reader.CaseType = 'Reconstructed Case'
+    reader.SkipZeroTime = 0
+    reader.Createcelltopointfiltereddata = 0
+    reader.Adddimensionalunitstoarraynames = 0
+    reader.Refresh()
+    reader.UpdatePipelineInformation()
+    available = list(reader.GetProperty('MeshRegions').Available)
+    cloud = 'lagrangian/materialPoints'
+    reader.MeshRegions = ['internalMesh'] \
+        + ([cloud] if cloud in available else [])
+    reader.CellArrays = ['U']
+    reader.LagrangianArrays = []
+
+    times = reader.TimestepValues
+    if isinstance(times, (int, float)):
+        times = [times]
+    times = sorted(float(t) for t in (times or []))
+    if not times:
+        print('picture.py: no time directories in %s' % caseDir)
+        return 1
+    chosen = []
+    for t in args.times:
+        near = min(times, key=lambda s: abs(s - t))
+        if near not in chosen:
+            chosen.append(near)
+
+    # One colour range for all panels: the largest water speed shown
+    uMax = 0.0
+    bounds = None
+    for t in chosen:
+        blocks = fetchBlocks(reader, t)
+        mesh = blocks.get('/internalMesh')
+        if mesh is None:
+            print('picture.py: no internal mesh at t = %g' % t)
+            return 1
+        bounds = mesh.GetBounds()
+        nCells = mesh.GetNumberOfCells()
+        s = speedRange(mesh)
+        if s is None:
+            print('picture.py: no finite U at t = %g' % t)
+            return 1
+        uMax = max(uMax, s)
+    if uMax <= 0:
+        uMax = 1.0
+    print('picture.py: times %s, water speed 0 to %.4g m/s'
+          % (' '.join('%g' % t for t in chosen), uMax))
+
+    size = [bounds[1] - bounds[0], bounds[3] - bounds[2],
+            bounds[5] - bounds[4]]
+    centre = [(bounds[2*i] + bounds[2*i + 1])/2 for i in range(3)]
+    flat = size[2] < 0.05*max(size)
+    dx = (size[0]*size[1]*size[2]/max(nCells, 1))**(1.0/3.0)
+    width = args.width
+    height = int(round(0.82*width*size[1]/size[0] + 70))
+    ppm = 0.82*width/size[0]        # pixels per metre
+
+    view = pv.CreateView('RenderView')
+    view.ViewSize = [width, height]
+    view.OrientationAxesVisibility = 0
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    view.Background = [1.0, 1.0, 1.0]
+    black = [0.0, 0.0, 0.0]
+
+    water = pv.ExtractBlock(Input=reader, Selectors=['/Root/internalMesh'])
+    if not flat:
+        water = pv.Slice(Input=water)
+        water.SliceType = 'Plane'
+        water.SliceType.Origin = centre
+        water.SliceType.Normal = [0.0, 0.0, 1.0]
+    waterDisplay = pv.Show(water, view)
+    waterDisplay.Representation = 'Surface'
+    pv.ColorBy(waterDisplay, ('CELLS', 'U', 'Magnitude'))
+    lut = pv.GetColorTransferFunction('U')
+    try:
+        lut.ApplyPreset('Turbo', True)
+    except Exception:
+        lut.ApplyPreset('Jet', True)
+    lut.RescaleTransferFunction(0.0, uMax)
+    lut.AutomaticRescaleRangeMode = 'Never'
+    waterDisplay.SetScalarBarVisibility(view, True)
+    bar = pv.GetScalarBar(lut, view)
+    bar.Title = 'water |U| [m/s]'
+    bar.ComponentTitle = ''
+    bar.TitleColor = black
+    bar.LabelColor = black
+    bar.RangeLabelFormat = '%-.3g'
+    bar.Orientation = 'Vertical'
+    bar.WindowLocation = 'Any Location'
+    bar.Position = [0.89, 0.15]
+    bar.ScalarBarLength = 0.7
+
+    if cloud in reader.MeshRegions:
+        points = pv.ExtractBlock(Input=reader, Selectors=['/Root/' + cloud])
+        pointsDisplay = pv.Show(points, view)
+        pointsDisplay.Representation = 'Points'
+        pointsDisplay.ColorArrayName = ['POINTS', '']
+        pointsDisplay.AmbientColor = pointsDisplay.DiffuseColor = \
+            [0.45, 0.28, 0.12]
+        # About the spacing of the points when seeded (2 per cell)
+        pointsDisplay.PointSize = max(2.0, 0.5*ppm*dx)
+        # In front of the water (the camera looks along -z)
+        pointsDisplay.Position = [0.0, 0.0, 1.01*size[2] + 0.01]
+
+    text = pv.Text()
+    textDisplay = pv.Show(text, view)
+    textDisplay.WindowLocation = 'Upper Center'
+    textDisplay.FontSize = 18
+    textDisplay.Color = black
+
+    # A first render resets the camera: render before placing it
+    pv.Render(view)
+    # The tank over 82% of the width from the left, the colour bar right
+    visible = [width/ppm, height/ppm]
+    focal = [bounds[0] - 0.04*visible[0] + visible[0]/2,
+             centre[1] + 12/ppm, centre[2]]
+    view.CameraFocalPoint = focal
+    view.CameraPosition = [focal[0], focal[1], focal[2] + 10*max(size)]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraParallelProjection = 1
+    view.CameraParallelScale = visible[1]/2
+
+    stem = os.path.splitext(args.png)[0]
+    panels = []
+    for t in chosen:
+        view.ViewTime = t
+        text.Text = 'soil column collapse: water speed and soil, t = %g s' % t
+        pv.Render(view)
+        name = '%s_t%s.png' % (stem, timeName(t))
+        pv.SaveScreenshot(name, view, ImageResolution=[width, height])
+        panels.append(name)
+        print('picture.py: %s' % name)
+    pv.Delete(view)
+
+    # The panels stacked top to bottom (VTK's image origin is the bottom)
+    import vtk
+    append = vtk.vtkImageAppend()
+    append.SetAppendAxis(1)
+    for name in reversed(panels):
+        r = vtk.vtkPNGReader()
+        r.SetFileName(name)
+        r.Update()
+        image = vtk.vtkImageData()
+        image.DeepCopy(r.GetOutput())
+        append.AddInputData(image)
+    append.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(args.png)
+    writer.SetInputData(append.GetOutput())
+    writer.Write()
+    print('picture.py: %s (%d panels)' % (args.png, len(panels)))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))
+
+#------------------------------------------------------------------------------
