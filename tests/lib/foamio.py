@@ -132,6 +132,15 @@ def check(ok, what, value=None):
     return ok
 
 
+def check_open(ok, what, value=None):
+    """For a specification item the code does not meet yet: print PASS: when
+    it holds, otherwise OPEN: with the measured value (reported by Alltest,
+    not counted as a failure); return ok. Each use names the open work."""
+    suffix = '' if value is None else ' (%s)' % value
+    print('%s: %s%s' % ('PASS' if ok else 'OPEN', what, suffix))
+    return ok
+
+
 _CLASS_NCOMP = {'scalarField': 1, 'vectorField': 3, 'symmTensorField': 6,
                 'tensorField': 9, 'labelField': 1}
 

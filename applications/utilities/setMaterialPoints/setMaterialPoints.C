@@ -45,15 +45,20 @@ Description
                     surface     10;             // [m] height of the free
                                                 // surface along -gravity
                     K0          0.5;            // horizontal/vertical stress
+                    waterDensity 1000;          // [kg/m3] submerged soil
+                                                // (buoyancy): default 0
                 }
             }
         );
     \endverbatim
 
     Geostatic stress (compression negative): vertical effective stress
-    sigma_v = rho |g| (h - surface) at height h below the surface along
+    sigma_v = gamma (h - surface) at height h below the surface along
     -gravity (gravity from constant/soilProperties), horizontal
-    K0 sigma_v.
+    K0 sigma_v, with the unit weight gamma = rho |g| of the dry soil, or
+    for a soil under water (the buoyancy effect) the buoyant unit weight
+    gamma' = (rho - (1 - n) rho_w) |g| = phi (rho_s - rho_w) |g| (rho the
+    material's density per mixture volume phi rho_s, n the porosity).
 
 \*---------------------------------------------------------------------------*/
 
@@ -143,6 +148,7 @@ int main(int argc, char *argv[])
     List<stressType> regionStress(nRegions);
     scalarList regionSurface(nRegions, 0.0);
     scalarList regionK0(nRegions, 1.0);
+    scalarList regionWaterRho(nRegions, 0.0);
 
     forAll(regionEntries, r)
     {
@@ -201,6 +207,14 @@ int main(int argc, char *argv[])
             const dictionary& gd = rd.subDict("geostaticCoeffs");
             regionSurface[r] = gd.get<scalar>("surface");
             regionK0[r] = gd.get<scalar>("K0");
+            regionWaterRho[r] = gd.getOrDefault<scalar>("waterDensity", 0);
+            if (!(regionWaterRho[r] >= 0))
+            {
+                FatalIOErrorInFunction(gd)
+                    << "waterDensity " << regionWaterRho[r] << " is not"
+                    << " allowed: it must be >= 0 [kg/m3]"
+                    << exit(FatalIOError);
+            }
             if (!(regionK0[r] >= 0))
             {
                 FatalIOErrorInFunction(gd)
@@ -307,7 +321,12 @@ int main(int argc, char *argv[])
         if (regionStress[r] == stressType::geostatic)
         {
             const scalar h = candidates[i] & up;
-            const scalar sv = regionRho[r]*mag(gravity)*min(h - regionSurface[r], 0.0);
+            const scalar gamma =
+                (
+                    regionRho[r]
+                  - (1 - regionPorosity[r])*regionWaterRho[r]
+                )*mag(gravity);
+            const scalar sv = gamma*min(h - regionSurface[r], 0.0);
             const symmTensor vv = sqr(up);
             stress = sv*vv + regionK0[r]*sv*(symmTensor::I - vv);
         }

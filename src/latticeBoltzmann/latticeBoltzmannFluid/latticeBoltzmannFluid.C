@@ -114,6 +114,7 @@ void Foam::latticeBoltzmannFluid::initialise()
     const bool hasFirst =
         popIO(0, IOobject::MUST_READ).typeHeaderOk<volScalarField>(true);
 
+    restarted_ = hasFirst;
     if (hasFirst)
     {
         if
@@ -307,6 +308,8 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     ),
     AisCurrent_(true),
     halo_(lattice.halo()),
+    restarted_(false),
+    porosityInitialised_(false),
     mass0_(0),
     nSteps_(0)
 {
@@ -457,14 +460,67 @@ void Foam::latticeBoltzmannFluid::enableForceField()
 }
 
 
-Foam::scalarList& Foam::latticeBoltzmannFluid::porosity()
+void Foam::latticeBoltzmannFluid::enablePorosity()
 {
     enableForceField();
     if (porosity_.empty())
     {
         porosity_.setSize(lattice_.nBox(), 1.0);
     }
-    return porosity_;
+}
+
+
+void Foam::latticeBoltzmannFluid::setPorosity(const scalarList& eps)
+{
+    enablePorosity();
+    for (const label n : lattice_.cellNode())
+    {
+        porosity_[n] = eps[n];
+    }
+    if (porosityInitialised_)
+    {
+        return;
+    }
+    porosityInitialised_ = true;
+    if (restarted_ || nSteps_ > 0)
+    {
+        return;
+    }
+
+    // The pore pressure p is c_s^2 (rho - 1)/eps: the density that holds
+    // the initial p is 1 + eps (rho(p) - 1); the velocity is superficial.
+    // (From the populations, which hold rho(p) and U at equilibrium: the
+    // fields have been rewritten with Guo's velocity since.)
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& w = velocitySet_->w();
+    scalarList& f = current();
+    scalar mass = 0;
+    for (const label n : lattice_.cellNode())
+    {
+        scalar rhoP = 0;
+        vector j(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            rhoP += f[q*nBox + n];
+            j += f[q*nBox + n]*vector(c[q]);
+        }
+        const scalar eps = porosity_[n];
+        const scalar rho = 1 + eps*(rhoP - 1);
+        const vector u = j/rhoP;
+        for (label q = 0; q < Q; ++q)
+        {
+            const scalar cu = vector(c[q]) & u;
+            f[q*nBox + n] =
+                w[q]*rho*(1 + 3*cu + (4.5*cu*cu - 1.5*magSqr(u))/eps);
+        }
+        mass += rho;
+    }
+    mass0_ = returnReduce(mass, sumOp<scalar>());
+    updateFields();
+    Info<< "Porous flow: the water initialised with the pore pressure p"
+        << " and the superficial velocity U" << nl << endl;
 }
 
 
@@ -492,8 +548,16 @@ void Foam::latticeBoltzmannFluid::step()
     const label nBox = lattice_.nBox();
 
     scalarList& f = current();
+    if (nSteps_ == 0 && !restarted_)
+    {
+        startAtForceBalance();
+    }
     halo_.exchangeSelected(f.data(), nBox);
-    boundaries_->fill(f.data());
+    boundaries_->fill
+    (
+        f.data(),
+        porosity_.size() ? porosity_.cdata() : nullptr
+    );
 
     lbmKernelArgs a;
     a.fOld = f.cdata();
@@ -516,11 +580,11 @@ void Foam::latticeBoltzmannFluid::step()
         a.dragX = dragX_.data();
         a.dragY = dragY_.data();
         a.dragZ = dragZ_.data();
+        a.relaxUx = relaxUx_.cdata();
         if (porosity_.size())
         {
             a.porosity = porosity_.cdata();
         }
-        a.relaxUx = relaxUx_.cdata();
         a.relaxUy = relaxUy_.cdata();
         a.relaxUz = relaxUz_.cdata();
     }
@@ -543,6 +607,44 @@ void Foam::latticeBoltzmannFluid::step()
     }
 
     AisCurrent_ = !AisCurrent_;
+}
+
+
+void Foam::latticeBoltzmannFluid::startAtForceBalance()
+{
+    // Guo's scheme carries the momentum rho u + F/2 between steps: a water
+    // set at rest in a balance of pressure and forces (hydrostatic, or the
+    // pore pressure at the soil's surface) carries F/2. Populations set at
+    // equilibrium from U carry rho U only, and would start with a jolt of
+    // F/2 (large where the porosity jumps): add it, as the first-order
+    // Hermite term w_q 3 c_q.F/2 (no mass)
+    if (Fx_.empty() && mag(bodyAcceleration_) == 0)
+    {
+        return;
+    }
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& w = velocitySet_->w();
+    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+    scalarList& f = current();
+    for (const label n : lattice_.cellNode())
+    {
+        scalar rho = 0;
+        for (label q = 0; q < Q; ++q)
+        {
+            rho += f[q*nBox + n];
+        }
+        vector F = (porosity_.size() ? porosity_[n] : 1.0)*rho*g;
+        if (Fx_.size())
+        {
+            F += vector(Fx_[n], Fy_[n], Fz_[n]);
+        }
+        for (label q = 0; q < Q; ++q)
+        {
+            f[q*nBox + n] += 1.5*w[q]*(vector(c[q]) & F);
+        }
+    }
 }
 
 
@@ -610,12 +712,13 @@ void Foam::latticeBoltzmannFluid::updateFields()
             rho += fq;
             j += fq*vector(c[q]);
         }
-        // Post-collision momentum is rho u + F/2 (u superficial in a
-        // porous medium, p the intrinsic pressure c_s^2 rho/eps)
+        // Post-collision momentum is rho u + F/2. In a porous medium u is
+        // the superficial velocity (the Darcy flux) and p the pore
+        // pressure c_s^2 (rho - 1)/eps (relative to the reference)
         const vector F = nodeForce(n, rho);
+        const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
         U[celli] = units_.toPhysical((j - 0.5*F)/rho);
-        p[celli] =
-            units_.pressure(porosity_.size() ? rho/porosity_[n] : rho);
+        p[celli] = units_.pressure(rho)/eps;
         rhoPhys[celli] = rho*units_.rho0();
     }
 

@@ -390,7 +390,7 @@ Foam::lbmBoundaries::lbmBoundaries
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::lbmBoundaries::fill(scalar* f) const
+void Foam::lbmBoundaries::fill(scalar* f, const scalar* porosity) const
 {
     const label n = copyGhost_.size();
     const label* ghost = copyGhost_.cdata();
@@ -434,7 +434,11 @@ void Foam::lbmBoundaries::fill(scalar* f) const
         const label q = abbDir_[i];
         const scalar cu = vector(c[q]) & u;
         const scalar shape = w[q]*(1.0 + 3.0*cu + 4.5*cu*cu - 1.5*magSqr(u));
-        const scalar rhoWall = 2.0*abbRho_[i] - rho;
+        // (porous flow: the pore pressure p is c_s^2 (rho - 1)/eps, so the
+        // density that holds p next to node x is 1 + eps (rho(p) - 1))
+        const scalar rhoB =
+            porosity ? 1.0 + porosity[x]*(abbRho_[i] - 1.0) : abbRho_[i];
+        const scalar rhoWall = 2.0*rhoB - rho;
         f[abbGhost_[i]] = f[q*nBox + x] + (rhoWall - rho)*shape;
     }
 }

@@ -317,10 +317,20 @@ inline Foam::vector Foam::materialPointSoil::latticeCoordinates
 
 Foam::scalar Foam::materialPointSoil::stableDt() const
 {
+    // (with an added modulus, e.g. the pore water's when the soil is
+    // undrained: Biot's undrained modulus M + K_f/n)
     scalar cp = 0;
     forAll(materials_, i)
     {
-        cp = max(cp, materials_[i].pWaveSpeed());
+        cp = max
+        (
+            cp,
+            std::sqrt
+            (
+                sqr(materials_[i].pWaveSpeed())
+              + addedModulus_/materials_[i].rho()
+            )
+        );
     }
     scalar vmax = 0;
     for (const vector& v : points_.v)
@@ -758,6 +768,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     gravityRamp_(dict_.getOrDefault<scalar>("gravityRamp", 0)),
     localDamping_(dict_.getOrDefault<scalar>("localDamping", 0)),
     time_(mesh_.time().value()),
+    addedModulus_(0),
     periodic_
     (
         lattice.periodic()[0] || lattice.periodic()[1] || lattice.periodic()[2]
@@ -939,6 +950,24 @@ void Foam::materialPointSoil::nodalFields
             }
         );
     }
+    // What the points gave the nodes beyond walls belongs, mirrored, to the
+    // nodes inside (as in the soil's own transfers): without this the
+    // solid fraction would dip at every wall
+    forAll(ghostNode_, i)
+    {
+        const label w = ghostNode_[i];
+        const label src = ghostSource_[i];
+        if (src != w)
+        {
+            phi[src] += phi[w];
+            mass[src] += mass[w];
+            velocity[src] += cmptMultiply(ghostSign_[i], velocity[w]);
+        }
+        phi[w] = 0;
+        mass[w] = 0;
+        velocity[w] = Zero;
+    }
+
     const scalar invV = 1.0/lattice_.cellVolume();
     forAll(phi, n)
     {
@@ -987,6 +1016,25 @@ void Foam::materialPointSoil::clearPointForces()
 }
 
 
+void Foam::materialPointSoil::addModulus(const scalar K, const word& why)
+{
+    addedModulus_ += K;
+    Info<< "    soil stable time step with " << why << ": "
+        << stableDt() << " s (added modulus " << K << " Pa)" << nl;
+}
+
+
+Foam::scalar Foam::materialPointSoil::minPorosity() const
+{
+    scalar n = 1;
+    for (const scalar np : points_.porosity)
+    {
+        n = min(n, np);
+    }
+    return n;
+}
+
+
 Foam::vector Foam::materialPointSoil::momentum() const
 {
     vector sum(Zero);
@@ -1009,11 +1057,16 @@ Foam::scalar Foam::materialPointSoil::kineticEnergy() const
 }
 
 
-void Foam::materialPointSoil::write() const
+void Foam::materialPointSoil::write()
 {
     points_.write(mesh_, lattice_);
 
-    // Nodal fields: soil volume fraction and velocity
+    // Nodal fields, as the couplings see them: the solid volume fraction
+    // phi and the soil's velocity
+    scalarList phi;
+    List<vector> vel;
+    nodalFields(phi, vel);
+
     volScalarField alpha
     (
         IOobject
@@ -1040,32 +1093,11 @@ void Foam::materialPointSoil::write() const
         mesh_,
         dimensionedVector(dimVelocity, Zero)
     );
-
-    scalarList vol(lattice_.nBox(), 0.0), mass(lattice_.nBox(), 0.0);
-    List<vector> mom(lattice_.nBox(), Zero);
-    const label nDim = lattice_.nDim();
-    shapeWeights sw;
-    forAll(points_.x, p)
-    {
-        const vector xl = latticeCoordinates(points_.x[p]);
-        shape_->weights(xl, points_.halfLength[p], nDim, sw);
-        sw.forEachNode
-        (
-            [&](label i, label j, label k, scalar N, const vector&)
-            {
-                const label n = lattice_.node(i, j, k);
-                vol[n] += N*points_.V[p];
-                mass[n] += N*points_.m[p];
-                mom[n] += N*points_.m[p]*points_.v[p];
-            }
-        );
-    }
-    const scalar Vcell = lattice_.cellVolume();
     forAll(lattice_.cellNode(), celli)
     {
         const label n = lattice_.cellNode()[celli];
-        alpha[celli] = vol[n]/Vcell;
-        Us[celli] = mass[n] > VSMALL ? mom[n]/mass[n] : Zero;
+        alpha[celli] = phi[n];
+        Us[celli] = vel[n];
     }
     alpha.write();
     Us.write();

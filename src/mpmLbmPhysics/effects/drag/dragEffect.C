@@ -167,15 +167,21 @@ void Foam::physicsEffects::drag::evolve()
     scalarList& Uy = fluid_.relaxUy();
     scalarList& Uz = fluid_.relaxUz();
 
+    // Porous flow: the water fills the soil's pores
+    if (porous)
+    {
+        scalarList& eps = porosity_;
+        eps.setSize(phi_.size());
+        forAll(eps, n)
+        {
+            eps[n] = 1 - phi_[n];
+        }
+        fluid_.setPorosity(eps);
+    }
+
     maxForce_ = 0;
     for (const label n : fluid_.lattice().cellNode())
     {
-        // Porous flow: the water sees the soil's porosity
-        const scalar eps = 1 - phi_[n];
-        if (porous)
-        {
-            fluid_.porosity()[n] = eps;
-        }
         if (phi_[n] <= 0)
         {
             kappa[n] = 0;
@@ -184,10 +190,12 @@ void Foam::physicsEffects::drag::evolve()
             continue;
         }
 
-        // The water's mass per volume and intrinsic velocity (the lattice's
-        // is superficial in porous flow)
+        // The water's mass per volume (porous flow: the pores' share) and
+        // its velocity in the pores (the lattice's is superficial there)
+        const scalar eps = 1 - phi_[n];
         const scalar mF = porous ? eps*rhoF : rhoF;
-        const vector vF = porous ? fluidVelocity_[n]/eps : fluidVelocity_[n];
+        const vector vF =
+            porous ? fluidVelocity_[n]/eps : fluidVelocity_[n];
         const vector slip = soilVelocity_[n] - vF;
         const scalar beta = model_->beta(phi_[n], mag(slip));
         const scalar a = beta*dt/mF;
@@ -207,6 +215,7 @@ void Foam::physicsEffects::drag::evolve()
         kappa[n] = k;
         s[n] = a > SMALL ? k/a : 1;
 
+        // (porous: towards the superficial velocity eps v_s)
         const vector Ur =
             units.toLattice(porous ? eps*soilVelocity_[n] : soilVelocity_[n]);
         Ux[n] = Ur.x();

@@ -104,17 +104,18 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
                 << "Forchheimer " << forchheimer_ << " is not allowed: it"
                 << " must be >= 0" << exit(FatalIOError);
         }
-        fluid_.porosity() = porosity_;
+        fluid_.setPorosity(scalarList(fluid_.lattice().nBox(), porosity_));
         const scalar H = fluid_.lattice().dx();
         Info<< ", porosity " << porosity_ << ", permeability "
             << permeability_ << " m2 (Darcy number K/dx^2 "
-            << permeability_/sqr(H) << "), Forchheimer " << forchheimer_;
+            << permeability_/sqr(H) << "), Forchheimer " << forchheimer_
+            << nl;
         setResistance();
     }
     else
     {
         // The drag maps the soil's porosity onto the lattice each step
-        fluid_.porosity();
+        fluid_.enablePorosity();
         Info<< ": porosity 1 - phi of the soil, resistance of the drag";
     }
     Info<< nl << endl;
@@ -127,7 +128,9 @@ Foam::wordList Foam::physicsEffects::porousFlow::requires() const
 {
     if (medium_ == mediumType::soil)
     {
-        return wordList({"fluid", "soil", "drag"});
+        // (without buoyancy the water would feel -grad(n p): a spurious
+        // force p grad(n) at the soil's surface)
+        return wordList({"fluid", "soil", "drag", "buoyancy"});
     }
     return wordList({"fluid"});
 }
@@ -149,6 +152,7 @@ void Foam::physicsEffects::porousFlow::setResistance()
     }
     for (const label n : fluid_.lattice().cellNode())
     {
+        // (|u| superficial, as the lattice's velocity)
         const scalar a =
             dt*(darcy + (forch > 0 ? forch*mag(velocity_[n]) : 0));
         kappa[n] = -std::expm1(-a);
