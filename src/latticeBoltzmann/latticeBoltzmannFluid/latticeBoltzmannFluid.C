@@ -648,6 +648,76 @@ void Foam::latticeBoltzmannFluid::startAtForceBalance()
 }
 
 
+void Foam::latticeBoltzmannFluid::streamedForce
+(
+    const List<vector>& F,
+    List<vector>& MF
+)
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& w = velocitySet_->w();
+    scratch_.setSize(Q*nBox);
+    scratch_ = 0;
+    for (const label n : lattice_.cellNode())
+    {
+        for (label q = 0; q < Q; ++q)
+        {
+            scratch_[q*nBox + n] = 3*w[q]*(vector(c[q]) & F[n]);
+        }
+    }
+    halo_.exchangeSelected(scratch_.data(), nBox);
+    boundaries_->fillHomogeneous(scratch_.data());
+    MF.setSize(nBox);
+    MF = Zero;
+    for (const label n : lattice_.cellNode())
+    {
+        vector m(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            m += scratch_[q*nBox + n - offset_[q]]*vector(c[q]);
+        }
+        MF[n] = m;
+    }
+}
+
+
+void Foam::latticeBoltzmannFluid::streamedScalar
+(
+    const scalarList& X,
+    List<vector>& G
+)
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& w = velocitySet_->w();
+    scratch_.setSize(Q*nBox);
+    scratch_ = 0;
+    for (const label n : lattice_.cellNode())
+    {
+        for (label q = 0; q < Q; ++q)
+        {
+            scratch_[q*nBox + n] = w[q]*X[n];
+        }
+    }
+    halo_.exchangeSelected(scratch_.data(), nBox);
+    boundaries_->fillHomogeneous(scratch_.data());
+    G.setSize(nBox);
+    G = Zero;
+    for (const label n : lattice_.cellNode())
+    {
+        vector m(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            m += scratch_[q*nBox + n - offset_[q]]*vector(c[q]);
+        }
+        G[n] = m;
+    }
+}
+
+
 Foam::vector Foam::latticeBoltzmannFluid::momentum() const
 {
     const label Q = velocitySet_->Q();

@@ -444,6 +444,20 @@ void Foam::lbmBoundaries::fill(scalar* f, const scalar* porosity) const
 }
 
 
+void Foam::lbmBoundaries::fillHomogeneous(scalar* f) const
+{
+    forAll(copyGhost_, i)
+    {
+        f[copyGhost_[i]] = f[copySource_[i]];
+    }
+    const label nBox = lattice_.nBox();
+    forAll(abbGhost_, i)
+    {
+        f[abbGhost_[i]] = f[abbDir_[i]*nBox + abbNode_[i]];
+    }
+}
+
+
 void Foam::lbmBoundaries::report(Ostream& os) const
 {
     const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();

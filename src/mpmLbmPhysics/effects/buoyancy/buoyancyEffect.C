@@ -18,6 +18,7 @@ License
 #include "porousFlowEffect.H"
 #include "dragEffect.H"
 #include "addToRunTimeSelectionTable.H"
+#include "volFields.H"
 
 namespace Foam
 {
@@ -36,7 +37,8 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     physicsEffect(scene),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(scene.effect<physicsEffects::soil>("soil").mpm()),
-    maxForce_(0)
+    maxForce_(0),
+    warm_(false)
 {
     if (!scene.effect<physicsEffects::drag>("drag").twoWay())
     {
@@ -58,9 +60,38 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
             << exit(FatalError);
     }
     fluid_.enableForceField();
-    const label nBox = fluid_.lattice().nBox();
+    const latticeMesh& lattice = fluid_.lattice();
+    const label nBox = lattice.nBox();
     pressure_.setSize(nBox, 0.0);
+    rho_.setSize(nBox, 1.0);
+    target_.setSize(nBox, Zero);
+    applied_.setSize(nBox, Zero);
+    streamed_.setSize(nBox, Zero);
+
+    // The applied force of a written time, for a restart that continues
+    // bit for bit (see evolve)
+    IOobject io
+    (
+        "lbmStaticForce",
+        scene.mesh().time().timeName(),
+        scene.mesh(),
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
+    );
+    if (io.typeHeaderOk<volVectorField>(true))
+    {
+        const volVectorField Fw(io, scene.mesh());
+        forAll(lattice.cellNode(), celli)
+        {
+            applied_[lattice.cellNode()[celli]] = Fw[celli];
+        }
+        warm_ = true;
+        Info<< "    the water's static force read from " << io.name() << nl;
+    }
     porosity_.setSize(nBox, 1.0);
+    porosityP_.setSize(nBox, 0.0);
+    gradP_.setSize(nBox, Zero);
+    gradNP_.setSize(nBox, Zero);
     soilForce_.setSize(nBox, Zero);
 
     Info<< "Buoyancy: pore pressure on the soil -phi grad(p) and on the"
@@ -88,17 +119,13 @@ void Foam::physicsEffects::buoyancy::evolve()
 {
     const latticeMesh& lattice = fluid_.lattice();
     const label nBox = lattice.nBox();
-    const velocitySet& vs = fluid_.velocities();
-    const label Q = vs.Q();
-    const List<labelVector>& c = vs.c();
-    const scalarList& w = vs.w();
+    const label Q = fluid_.velocities().Q();
     const scalarList& f = fluid_.populations();
     const scalarList& eps = fluid_.porosity();
-    const List<unsigned char>& kind = lattice.kind();
     const labelList& cellNode = lattice.cellNode();
 
     // Pore pressure c_s^2 (rho - 1)/n (lattice units, relative to the
-    // reference) and the porosity, with their halo images
+    // reference) and the porosity
     for (const label n : cellNode)
     {
         scalar rho = 0;
@@ -106,26 +133,30 @@ void Foam::physicsEffects::buoyancy::evolve()
         {
             rho += f[q*nBox + n];
         }
+        rho_[n] = rho;
         pressure_[n] = (rho - 1)/(3*eps[n]);
         porosity_[n] = eps[n];
     }
-    lattice.halo().exchange(pressure_.data(), 1, nBox);
-    lattice.halo().exchange(porosity_.data(), 1, nBox);
 
-    // The streaming of a water at rest gives node n the impulse
-    // sum_q w_q c_q rho(n - c_q) = -grad(c_s^2 rho) = -grad(n p): the
-    // lattice's own gradient stencil. With the same stencil,
-    //     D(p)  = 3 sum_q w_q c_q p(n - c_q)                  = -grad(p)
-    //     F_w   = 3 sum_q w_q c_q p(n - c_q) (n(n) - n(n - c_q))
-    // so that the water feels exactly n(n) D(p) = -n grad(p), and the soil
-    // phi D(p) = -phi grad(p). A wall mirrors the node (as bounce-back does
-    // for a water at rest). Summed over the nodes the two telescope:
-    // momentum is conserved.
-    labelList offset(Q);
-    forAll(c, q)
+    // The streaming of a water at rest of density X gives node n the
+    // impulse S(X) = sum_q w_q c_q X(n - c_q) = -c_s^2 grad(X), walls and
+    // pressure boundaries included: the lattice's own gradient stencil.
+    // The lattice gives the water S(rho) = 3 S(n p) = -grad(n p) (n the
+    // porosity); with
+    //     D(p) = 3 S(p)                                       = -grad(p)
+    //     F_w  = n D(p) - 3 S(n p)                            = p grad(n)
+    // the water feels exactly n D(p) = -n grad(p) and the soil
+    // phi D(p) = -phi grad(p). Summed over the nodes S telescopes:
+    // momentum is conserved (walls aside, which act on the water).
+    forAll(porosityP_, n)
     {
-        offset[q] = lattice.offset(c[q].x(), c[q].y(), c[q].z());
+        porosityP_[n] = porosity_[n]*pressure_[n];
     }
+    fluid_.streamedScalar(pressure_, gradP_);
+    fluid_.streamedScalar(porosityP_, gradNP_);
+
+    const vector g =
+        fluid_.units().accelerationToLattice(fluid_.bodyAcceleration());
     const scalar toNewton =
         lattice.cellVolume()/fluid_.units().forceDensityToLattice();
     scalarList& Fx = fluid_.forceX();
@@ -135,22 +166,13 @@ void Foam::physicsEffects::buoyancy::evolve()
     maxForce_ = 0;
     for (const label n : cellNode)
     {
-        vector D(Zero), Fw(Zero);
-        for (label q = 0; q < Q; ++q)
-        {
-            label m = n - offset[q];
-            const unsigned char k = kind[m];
-            if (k != latticeMesh::OWNED && k != latticeMesh::HALO)
-            {
-                m = n;
-            }
-            const vector wc = (3*w[q]*pressure_[m])*vector(c[q]);
-            D += wc;
-            Fw += wc*(porosity_[n] - porosity_[m]);
-        }
-        Fx[n] = Fw.x();
-        Fy[n] = Fw.y();
-        Fz[n] = Fw.z();
+        const vector D = 3*gradP_[n];
+        const vector Fw = porosity_[n]*D - 3*gradNP_[n];
+
+        // The static force the water at rest must balance: its weight and
+        // the porosity term
+        target_[n] = porosity_[n]*rho_[n]*g + Fw;
+
         const scalar phi = 1 - porosity_[n];
         if (phi > 0)
         {
@@ -158,8 +180,77 @@ void Foam::physicsEffects::buoyancy::evolve()
             maxForce_ = max(maxForce_, mag(soilForce_[n]));
         }
     }
+
+    // Guo's scheme carries half of each step's force into the next, and
+    // the streaming of that momentum from the neighbours (and its
+    // reflection at walls) makes a water at rest balance (F + M F)/2
+    // against the pressure rather than F: where the force jumps (the
+    // porosity at the soil's surface, the walls) the pressure would take up
+    // the difference. Applying F with (F + M F)/2 = target (a few
+    // relaxation sweeps; smooth parts converge at once) keeps the pore
+    // pressure hydrostatic there.
+    // The sweeps converge over the steps (the static force changes
+    // slowly): one per step from the last step's force, more at the start
+    List<vector>& F = applied_;
+    label nSweeps = 1;
+    if (!warm_)
+    {
+        F = target_;
+        nSweeps = 10;
+        warm_ = true;
+    }
+    for (label sweep = 0; sweep < nSweeps; ++sweep)
+    {
+        fluid_.streamedForce(F, streamed_);
+        for (const label n : cellNode)
+        {
+            F[n] += target_[n] - 0.5*(F[n] + streamed_[n]);
+        }
+    }
+    for (const label n : cellNode)
+    {
+        const vector Fn = F[n] - porosity_[n]*rho_[n]*g;
+        Fx[n] = Fn.x();
+        Fy[n] = Fn.y();
+        Fz[n] = Fn.z();
+    }
+
     soil_.addNodeForces(soilForce_);
     maxForce_ /= lattice.cellVolume();
+}
+
+
+void Foam::physicsEffects::buoyancy::write()
+{
+    // Lattice units, binary whatever the case's writeFormat (as the
+    // populations): a restart continues bit for bit
+    const fvMesh& mesh = scene_.mesh();
+    volVectorField Fw
+    (
+        IOobject
+        (
+            "lbmStaticForce",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensionedVector(dimless, Zero)
+    );
+    const labelList& cellNode = fluid_.lattice().cellNode();
+    forAll(cellNode, celli)
+    {
+        Fw[celli] = applied_[cellNode[celli]];
+    }
+    Fw.writeObject
+    (
+        IOstream::BINARY,
+        IOstream::currentVersion,
+        mesh.time().writeCompression(),
+        true
+    );
 }
 
 
