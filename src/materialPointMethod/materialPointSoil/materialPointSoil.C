@@ -265,6 +265,17 @@ void Foam::materialPointSoil::buildGhosts()
     }
     ghostNode_.transfer(ghost);
     ghostSource_.transfer(source);
+
+    // Box lookup: the node inside that each node beyond a wall folds into
+    ghostImage_.setSize(lattice_.nBox());
+    forAll(ghostImage_, n)
+    {
+        ghostImage_[n] = n;
+    }
+    forAll(ghostNode_, i)
+    {
+        ghostImage_[ghostNode_[i]] = ghostSource_[i];
+    }
     ghostSign_.transfer(sign);
 
     // Friction contact nodes
@@ -333,9 +344,30 @@ Foam::scalar Foam::materialPointSoil::stableDt() const
         );
     }
     scalar vmax = 0;
-    for (const vector& v : points_.v)
+    label fastest = -1;
+    forAll(points_.v, p)
     {
-        vmax = max(vmax, magSqr(v));
+        const scalar v2 = magSqr(points_.v[p]);
+        if (!(v2 <= vmax))
+        {
+            vmax = v2;
+            fastest = p;
+        }
+    }
+    // A point ten times faster than the fastest p-wave has left the range
+    // an explicit MPM step resolves (or is not finite): stop before
+    // anything non-finite is written
+    if (fastest >= 0 && !(std::sqrt(vmax) < maxSpeed_))
+    {
+        FatalErrorInFunction
+            << "The soil went unstable at time " << mesh_.time().timeName()
+            << " s: material point " << fastest << " at "
+            << points_.x[fastest] << " moves at " << std::sqrt(vmax)
+            << " m/s, above " << maxSpeed_ << " m/s (ten times the largest"
+            << " p-wave speed of the materials)." << nl
+            << "    Lower CFL in constant/soilProperties (now " << CFL_
+            << "), or check the loads the couplings put on the soil."
+            << " Nothing of this step was written." << exit(FatalError);
     }
     return CFL_*lattice_.dx()/(cp + std::sqrt(vmax));
 }
@@ -603,7 +635,7 @@ void Foam::materialPointSoil::g2p(const scalar dt)
                 dEps, s, points_.plasticStrain[p]
             );
             points_.F[p] = (tensor::I + dt*L) & points_.F[p];
-            points_.V[p] = det(points_.F[p])*points_.V0[p];
+            updateVolume(p);
         }
 
         points_.x[p] += dt*vPic;
@@ -642,8 +674,20 @@ void Foam::materialPointSoil::updateStresses
             symm(L)*dt, s, points_.plasticStrain[p]
         );
         points_.F[p] = (tensor::I + dt*L) & points_.F[p];
-        points_.V[p] = det(points_.F[p])*points_.V0[p];
+        updateVolume(p);
     }
+}
+
+
+inline void Foam::materialPointSoil::updateVolume(const label p)
+{
+    // The grains are incompressible: the solid volume (1 - n) V of a point
+    // is kept as it dilates or compacts, so its porosity n changes (a
+    // point never holds more grains than its volume)
+    const scalar Vold = points_.V[p];
+    points_.V[p] = det(points_.F[p])*points_.V0[p];
+    points_.porosity[p] =
+        max(1 - (1 - points_.porosity[p])*Vold/points_.V[p], 0.0);
 }
 
 
@@ -769,6 +813,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     localDamping_(dict_.getOrDefault<scalar>("localDamping", 0)),
     time_(mesh_.time().value()),
     addedModulus_(0),
+    maxSpeed_(GREAT),
     periodic_
     (
         lattice.periodic()[0] || lattice.periodic()[1] || lattice.periodic()[2]
@@ -818,6 +863,11 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     }
 
     readMaterials();
+    maxSpeed_ = 0;
+    forAll(materials_, i)
+    {
+        maxSpeed_ = max(maxSpeed_, 10*materials_[i].pWaveSpeed());
+    }
     readWalls();
 
     // Grid
@@ -990,6 +1040,8 @@ void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
         pointForce_.setSize(points_.size());
         pointForce_ = Zero;
     }
+    // (a point's weight on a node beyond a wall was folded into the node
+    // inside: it takes its share of that node's force through it)
     forAll(points_.x, p)
     {
         const scalar mp = points_.m[p];
@@ -998,7 +1050,7 @@ void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
         (
             [&](label i, label j, label k, scalar N, const vector&)
             {
-                const label n = lattice_.node(i, j, k);
+                const label n = ghostImage_[lattice_.node(i, j, k)];
                 if (nodeMass_[n] > 0)
                 {
                     f += (N*mp/nodeMass_[n])*nodeForce[n];
