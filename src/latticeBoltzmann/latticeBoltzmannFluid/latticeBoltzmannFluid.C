@@ -648,6 +648,29 @@ void Foam::latticeBoltzmannFluid::startAtForceBalance()
 }
 
 
+void Foam::latticeBoltzmannFluid::streamScratch(List<vector>& G)
+{
+    // The halo, the boundaries' linear part, and the pull: the first
+    // moment each owned node receives
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    halo_.exchangeSelected(scratch_.data(), nBox);
+    boundaries_->fillHomogeneous(scratch_.data());
+    G.setSize(nBox);
+    G = Zero;
+    for (const label n : lattice_.cellNode())
+    {
+        vector m(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            m += scratch_[q*nBox + n - offset_[q]]*vector(c[q]);
+        }
+        G[n] = m;
+    }
+}
+
+
 void Foam::latticeBoltzmannFluid::streamedForce
 (
     const List<vector>& F,
@@ -667,19 +690,7 @@ void Foam::latticeBoltzmannFluid::streamedForce
             scratch_[q*nBox + n] = 3*w[q]*(vector(c[q]) & F[n]);
         }
     }
-    halo_.exchangeSelected(scratch_.data(), nBox);
-    boundaries_->fillHomogeneous(scratch_.data());
-    MF.setSize(nBox);
-    MF = Zero;
-    for (const label n : lattice_.cellNode())
-    {
-        vector m(Zero);
-        for (label q = 0; q < Q; ++q)
-        {
-            m += scratch_[q*nBox + n - offset_[q]]*vector(c[q]);
-        }
-        MF[n] = m;
-    }
+    streamScratch(MF);
 }
 
 
@@ -691,7 +702,6 @@ void Foam::latticeBoltzmannFluid::streamedScalar
 {
     const label Q = velocitySet_->Q();
     const label nBox = lattice_.nBox();
-    const List<labelVector>& c = velocitySet_->c();
     const scalarList& w = velocitySet_->w();
     scratch_.setSize(Q*nBox);
     scratch_ = 0;
@@ -702,19 +712,7 @@ void Foam::latticeBoltzmannFluid::streamedScalar
             scratch_[q*nBox + n] = w[q]*X[n];
         }
     }
-    halo_.exchangeSelected(scratch_.data(), nBox);
-    boundaries_->fillHomogeneous(scratch_.data());
-    G.setSize(nBox);
-    G = Zero;
-    for (const label n : lattice_.cellNode())
-    {
-        vector m(Zero);
-        for (label q = 0; q < Q; ++q)
-        {
-            m += scratch_[q*nBox + n - offset_[q]]*vector(c[q]);
-        }
-        G[n] = m;
-    }
+    streamScratch(G);
 }
 
 

@@ -3,13 +3,13 @@
 #   mpmLbmFoam: coupled material point / lattice Boltzmann soil-water solver
 #------------------------------------------------------------------------------
 # Script
-#     setHydrostatic.py CASE RHO G H
+#     tests/lib/setHydrostatic.py CASE RHO G H
 #
 # Description
 #     Writes the hydrostatic pore pressure p = RHO G (H - y) (relative to
-#     the lattice's reference pressure at the top y = H) as the
-#     internalField of CASE/0/p, from the cell centres 0/C (postProcess
-#     -func writeCellCentres -time 0). As tests/validation/submergedBed.
+#     the lattice's reference pressure at the top) as the internalField of
+#     CASE/0/p, from the cell centres 0/C (postProcess -func
+#     writeCellCentres -time 0).
 #------------------------------------------------------------------------------
 import os
 import re
