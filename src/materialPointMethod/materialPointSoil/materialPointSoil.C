@@ -180,22 +180,29 @@ void Foam::materialPointSoil::buildGhosts()
         vector s(vector::one);
         bool reflected = false;
 
-        // Reflect across every boundary plane the node lies beyond
+        // Reflect across every boundary plane the node lies beyond, again
+        // while the image lies beyond the opposite plane (a domain thinner
+        // than the shape function's reach: cubic B-splines reach two nodes
+        // beyond a wall, across a domain one cell thick)
+        // reflections[d][side]: how often across the low (0) and high (1)
+        // wall of axis d
+        label reflections[3][2] = {{0, 0}, {0, 0}, {0, 0}};
         for (direction d = 0; d < 3; ++d)
         {
-            if (g[d] < 0)
+            while (r[d] < 0 || r[d] >= N[d])
             {
-                r[d] = -1 - g[d];
+                if (r[d] < 0)
+                {
+                    r[d] = -1 - r[d];
+                    ++reflections[d][0];
+                }
+                else
+                {
+                    r[d] = 2*N[d] - 1 - r[d];
+                    ++reflections[d][1];
+                }
+                reflected = true;
             }
-            else if (g[d] >= N[d])
-            {
-                r[d] = 2*N[d] - 1 - g[d];
-            }
-            else
-            {
-                continue;
-            }
-            reflected = true;
         }
 
         label src = -1;
@@ -218,20 +225,18 @@ void Foam::materialPointSoil::buildGhosts()
 
         if (src >= 0)
         {
-            // The wall type of each reflected axis: from the boundary face
-            // of the cell next to the wall on that axis
+            // The wall type of each reflection: from the boundary face of
+            // the cell next to that wall on that axis
             for (direction d = 0; d < 3; ++d)
+            for (label side = 0; side < 2; ++side)
+            for (label k = 0; k < reflections[d][side]; ++k)
             {
-                if (g[d] == r[d])
-                {
-                    continue;
-                }
                 labelVector c(r);
-                c[d] = (g[d] < 0 ? 0 : N[d] - 1);
+                c[d] = (side == 0 ? 0 : N[d] - 1);
                 const labelVector cb = c - bs;
                 const label cn = lattice_.node(cb.x(), cb.y(), cb.z());
                 const label celli = nodeCell[cn];
-                const label dir = 2*d + (g[d] < 0 ? 0 : 1);
+                const label dir = 2*d + side;
                 const label facei = celli >= 0 ? cellFace[celli][dir] : -1;
                 const wallType wt =
                     facei >= 0
