@@ -54,7 +54,8 @@ Description
 
     Geostatic stress (compression negative): vertical effective stress
     sigma_v = gamma (h - surface) at height h below the surface along
-    -gravity (gravity from constant/soilProperties), horizontal
+    -gravity (gravity from constant/soilProperties, or constant/g for the
+    gravity effect), horizontal
     K0 sigma_v, with the unit weight gamma = rho |g| of the dry soil, or
     for a soil under water (the buoyancy effect) the buoyant unit weight
     gamma' = (rho - (1 - n) rho_w) |g| = phi (rho_s - rho_w) |g| (rho the
@@ -68,6 +69,7 @@ Description
 #include "searchableSurface.H"
 #include "volumeType.H"
 #include "Enum.H"
+#include "uniformDimensionedFields.H"
 #include <chrono>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -122,7 +124,24 @@ int main(int argc, char *argv[])
 
     const dictionary& materialsDict = soilDict.subDict("materials");
     const wordList materialNames(materialsDict.toc());
-    const vector gravity = soilDict.getOrDefault<vector>("gravity", Zero);
+    // Gravity from constant/soilProperties, or from constant/g (the gravity
+    // effect) when the soil's dictionary gives none
+    vector gravity = soilDict.getOrDefault<vector>("gravity", Zero);
+    if (mag(gravity) == 0)
+    {
+        IOobject gio
+        (
+            "g",
+            runTime.constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        );
+        if (gio.typeHeaderOk<uniformDimensionedVectorField>(true))
+        {
+            gravity = uniformDimensionedVectorField(gio).value();
+        }
+    }
 
     // The regions
     const PtrList<entry> regionEntries(dict.lookup("regions"));
@@ -225,6 +244,7 @@ int main(int argc, char *argv[])
             {
                 FatalIOErrorInFunction(rd)
                     << "Region " << name << ": geostatic stress needs gravity"
+                    << " (constant/g or gravity in constant/soilProperties)"
                     << " in constant/soilProperties" << exit(FatalIOError);
             }
         }

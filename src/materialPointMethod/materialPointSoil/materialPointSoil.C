@@ -331,7 +331,7 @@ inline Foam::vector Foam::materialPointSoil::latticeCoordinates
 }
 
 
-Foam::scalar Foam::materialPointSoil::stableDt() const
+Foam::scalar Foam::materialPointSoil::pWaveSpeed() const
 {
     // (with an added modulus, e.g. the pore water's when the soil is
     // undrained: Biot's undrained modulus M + K_f/n)
@@ -348,6 +348,13 @@ Foam::scalar Foam::materialPointSoil::stableDt() const
             )
         );
     }
+    return cp;
+}
+
+
+Foam::scalar Foam::materialPointSoil::stableDt() const
+{
+    const scalar cp = pWaveSpeed();
     scalar vmax = 0;
     label fastest = -1;
     forAll(points_.v, p)

@@ -212,7 +212,16 @@ Foam::physicsScene::physicsScene(fvMesh& mesh)
         << runTime.endTime().value() << " s" << nl
         << "    updates      " << updates << " per step" << nl
         << "    memory       " << memory/1048576.0 << " MiB for the"
-        << " effects' data" << nl << endl;
+        << " effects' data" << nl;
+    forAll(effects_, i)
+    {
+        const string s = effects_[i].plan();
+        if (!s.empty())
+        {
+            Info<< "    " << names_[i] << ": " << s.c_str() << nl;
+        }
+    }
+    Info<< endl;
 
     start_ = clock::now();
     lastProgress_ = start_;

@@ -38,6 +38,16 @@ void Foam::physicsEffects::fluid::evolve()
 }
 
 
+Foam::string Foam::physicsEffects::fluid::plan() const
+{
+    const lbmUnits& u = lbm_.units();
+    return
+        "one lattice step per step, " + Foam::name(u.dt()) + " s (tau "
+      + Foam::name(u.tau()) + ", lattice speed dx/dt "
+      + Foam::name(u.velocityScale()) + " m/s)";
+}
+
+
 void Foam::physicsEffects::fluid::write()
 {
     lbm_.updateFields();

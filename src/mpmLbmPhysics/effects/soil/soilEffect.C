@@ -66,6 +66,21 @@ Foam::scalar Foam::physicsEffects::soil::memoryBytes() const
 }
 
 
+Foam::string Foam::physicsEffects::soil::plan() const
+{
+    // The sub-steps follow the soil's stable step at every outer step: at
+    // the start they are set by the p-wave speed (and the points' speed)
+    const scalar deltaT = scene_.mesh().time().deltaTValue();
+    const scalar dt = mpm_.stableDt();
+    const label n = max(label(std::ceil(deltaT/dt - 1e-9)), label(1));
+    return
+        Foam::name(n) + " sub-steps of " + Foam::name(deltaT/n)
+      + " s per step at the start (stable step " + Foam::name(dt)
+      + " s = CFL " + Foam::name(mpm_.CFL()) + " dx/(c_p + |v|), c_p "
+      + Foam::name(mpm_.pWaveSpeed()) + " m/s); re-planned every step";
+}
+
+
 Foam::string Foam::physicsEffects::soil::progress() const
 {
     return
