@@ -73,9 +73,9 @@ int main(int argc, char *argv[])
         ++runTime;
 
         scene.evolve();
-        scene.write();
 
-        runTime.write();
+        // The effects' outputs and the registered fields at write times
+        scene.write();
     }
 
     scene.summary();
