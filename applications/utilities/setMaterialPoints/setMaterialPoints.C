@@ -27,6 +27,14 @@ Description
     region (in the order given) that contains it. The cell of a point comes
     from the lattice directly (no search), so a million points take seconds.
 
+    In parallel (-parallel, after decomposePar) each processor seeds its own
+    cells and writes processorN/<startTime>/lagrangian/materialPoints: the
+    serial seeding decomposed (as decomposePar makes it from a serial
+    cloud), to round-off in the positions (the cell centres of the
+    processor meshes). Each point's identity (the cloud's origId) comes
+    from its cell's global lattice index and its sub-cell: the same
+    whatever the decomposition.
+
     \verbatim
         pointsPerCell   2;                      // per direction
         regions
@@ -70,6 +78,7 @@ Description
 #include "volumeType.H"
 #include "Enum.H"
 #include "uniformDimensionedFields.H"
+#include "globalIndex.H"
 #include <chrono>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -256,14 +265,22 @@ int main(int argc, char *argv[])
     const scalar dx = lattice.dx();
     const vectorField& C = mesh.cellCentres();
     pointField candidates(mesh.nCells()*perCell);
+    labelList candidateId(candidates.size());
+    const labelVector& N = lattice.globalN();
+    const bool globalIds =
+        scalar(lattice.nGlobalBox())*perCell < scalar(labelMax);
     {
         label i = 0;
         forAll(C, celli)
         {
+            const labelVector g = lattice.globalIjk(lattice.cellNode()[celli]);
+            const label cellId = g.x() + N.x()*(g.y() + N.y()*g.z());
             for (label c = 0; c < (nDim == 2 ? 1 : n); ++c)
             for (label b = 0; b < n; ++b)
             for (label a = 0; a < n; ++a)
             {
+                candidateId[i] =
+                    globalIds ? cellId*perCell + a + n*(b + n*c) : -1;
                 candidates[i++] = C[celli] + dx*vector
                 (
                     (a + 0.5)/n - 0.5,
@@ -362,7 +379,17 @@ int main(int argc, char *argv[])
         points.material[k] = regionMaterial[r];
         points.halfLength[k] = halfSize;
         points.porosity[k] = regionPorosity[r];
+        points.id[k] = candidateId[i];
         ++k;
+    }
+    if (!globalIds)
+    {
+        // (more sub-cells than labels: numbered in processor order)
+        const globalIndex offsets(nPoints);
+        forAll(points.id, i)
+        {
+            points.id[i] = offsets.toGlobal(i);
+        }
     }
 
     points.write(mesh, lattice);

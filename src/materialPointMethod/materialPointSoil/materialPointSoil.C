@@ -162,9 +162,34 @@ void Foam::materialPointSoil::buildGhosts()
     const labelVector& N = lattice_.globalN();
     const labelVector& bs = lattice_.boxStart();
     const labelVector& bn = lattice_.boxN();
-    const labelList& nodeCell = lattice_.nodeCell();
     const List<FixedList<label, 6>>& cellFace = lattice_.cellBoundaryFace();
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    const FixedList<bool, 3>& periodic = lattice_.periodic();
+
+    // The patch of the boundary face on each side (-x, +x, -y, +y, -z, +z)
+    // of the cell of every node, -1 where there is none. In parallel also
+    // at the halo nodes: a node beyond a wall near a processor boundary
+    // mirrors a node of the neighbour. (The patches a decomposition keeps
+    // have the same index on every processor.)
+    List<labelList> sidePatch(6, labelList(lattice_.nBox(), -1));
+    forAll(cellFace, celli)
+    {
+        for (label dir = 0; dir < 6; ++dir)
+        {
+            if (cellFace[celli][dir] >= 0)
+            {
+                sidePatch[dir][lattice_.cellNode()[celli]] =
+                    patches.whichPatch(cellFace[celli][dir]);
+            }
+        }
+    }
+    if (Pstream::parRun())
+    {
+        for (labelList& sp : sidePatch)
+        {
+            lattice_.halo().exchange(sp);
+        }
+    }
 
     DynamicList<label> ghost, source;
     DynamicList<vector> sign;
@@ -183,12 +208,17 @@ void Foam::materialPointSoil::buildGhosts()
         // Reflect across every boundary plane the node lies beyond, again
         // while the image lies beyond the opposite plane (a domain thinner
         // than the shape function's reach: cubic B-splines reach two nodes
-        // beyond a wall, across a domain one cell thick)
+        // beyond a wall, across a domain one cell thick); not across a
+        // periodic direction: the halo wraps there
         // reflections[d][side]: how often across the low (0) and high (1)
         // wall of axis d
         label reflections[3][2] = {{0, 0}, {0, 0}, {0, 0}};
         for (direction d = 0; d < 3; ++d)
         {
+            if (periodic[d])
+            {
+                continue;
+            }
             while (r[d] < 0 || r[d] >= N[d])
             {
                 if (r[d] < 0)
@@ -215,8 +245,14 @@ void Foam::materialPointSoil::buildGhosts()
              && b.x() < bn.x() && b.y() < bn.y() && b.z() < bn.z()
             )
             {
+                // (a halo node in parallel: what is folded onto it is then
+                // added to its owner's, and it holds the owner's velocity)
                 src = lattice_.node(b.x(), b.y(), b.z());
-                if (kind[src] != latticeMesh::OWNED)
+                if
+                (
+                    kind[src] != latticeMesh::OWNED
+                 && kind[src] != latticeMesh::HALO
+                )
                 {
                     src = -1;
                 }
@@ -235,13 +271,10 @@ void Foam::materialPointSoil::buildGhosts()
                 c[d] = (side == 0 ? 0 : N[d] - 1);
                 const labelVector cb = c - bs;
                 const label cn = lattice_.node(cb.x(), cb.y(), cb.z());
-                const label celli = nodeCell[cn];
                 const label dir = 2*d + side;
-                const label facei = celli >= 0 ? cellFace[celli][dir] : -1;
+                const label patchi = sidePatch[dir][cn];
                 const wallType wt =
-                    facei >= 0
-                  ? patchWall_[patches.whichPatch(facei)]
-                  : wallType::noSlip;
+                    patchi >= 0 ? patchWall_[patchi] : wallType::noSlip;
                 // Mirrors compose: a slip wall reverses the normal
                 // component, a noSlip wall every component. Beyond a
                 // friction wall the node copies the last node inside, which
@@ -373,7 +406,8 @@ Foam::scalar Foam::materialPointSoil::stableDt() const
     {
         FatalErrorInFunction
             << "The soil went unstable at time " << mesh_.time().timeName()
-            << " s: material point " << fastest << " at "
+            << " s: material point " << points_.id[fastest]
+            << " (origId) at "
             << points_.x[fastest] << " moves at " << std::sqrt(vmax)
             << " m/s, above " << maxSpeed_ << " m/s (ten times the largest"
             << " p-wave speed of the materials)." << nl
@@ -381,6 +415,8 @@ Foam::scalar Foam::materialPointSoil::stableDt() const
             << "), or check the loads the couplings put on the soil."
             << " Nothing of this step was written." << exit(FatalError);
     }
+    // (every processor takes the same sub-steps)
+    reduce(vmax, maxOp<scalar>());
     return CFL_*lattice_.dx()/(cp + std::sqrt(vmax));
 }
 
@@ -729,6 +765,58 @@ bool Foam::materialPointSoil::clamp(vector& x) const
 }
 
 
+Foam::label Foam::materialPointSoil::cellNodeOf(const vector& x) const
+{
+    const scalar dx = lattice_.dx();
+    const vector& o = lattice_.origin();
+    const labelVector& bs = lattice_.boxStart();
+    const labelVector& bn = lattice_.boxN();
+    labelVector b(Zero);
+    for (direction d = 0; d < (lattice_.twoD() ? 2 : 3); ++d)
+    {
+        b[d] = label(std::floor((x[d] - o[d])/dx)) - bs[d];
+        if (b[d] < 0 || b[d] >= bn[d])
+        {
+            return -1;
+        }
+    }
+    return lattice_.node(b.x(), b.y(), b.z());
+}
+
+
+void Foam::materialPointSoil::migrate()
+{
+    // The owner of a point is the owner of the cell containing it (the
+    // global cell index from the position: the same on every processor).
+    // A point moves less than a cell per sub-step (CFL <= 1), so from an
+    // owned cell it reaches an owned cell or a halo cell, whose owner is
+    // known here.
+    const label myProc = Pstream::myProcNo();
+    labelList toProc(points_.size(), -1);
+    forAll(points_.x, p)
+    {
+        const label n = cellNodeOf(points_.x[p]);
+        if (n < 0)
+        {
+            FatalErrorInFunction
+                << "Material point " << points_.id[p] << " at "
+                << points_.x[p] << " moved beyond the halo of processor "
+                << myProc << " in one sub-step at time "
+                << mesh_.time().timeName() << " s" << nl
+                << "    A point must move less than a cell per sub-step:"
+                << " lower the CFL of constant/soilProperties"
+                << exit(FatalError);
+        }
+        const label owner = nodeOwner_[n];
+        if (owner >= 0 && owner != myProc)
+        {
+            toProc[p] = owner;
+        }
+    }
+    points_.migrate(toProc, hasPointForces_ ? &pointForce_ : nullptr);
+}
+
+
 void Foam::materialPointSoil::subStep(const scalar dt)
 {
     // The weights of the points at the start of the sub-step serve every
@@ -737,17 +825,53 @@ void Foam::materialPointSoil::subStep(const scalar dt)
 
     clearGrid();
     const bool usf = (update_ == updateType::USF);
+    const bool parallel = Pstream::parRun();
+    const haloExchange& halo = lattice_.halo();
     p2gMassMomentum(!usf);
     foldGhosts(gridMomentum_, true);
+    if (!usf)
+    {
+        foldGhosts(gridForce_, false);
+    }
+    if (parallel)
+    {
+        // What the points gave the halo nodes belongs to their owners
+        if (usf)
+        {
+            halo.addToOwners
+            ({
+                haloExchange::field(gridMass_),
+                haloExchange::field(gridMomentum_)
+            });
+        }
+        else
+        {
+            halo.addToOwners
+            ({
+                haloExchange::field(gridMass_),
+                haloExchange::field(gridMomentum_),
+                haloExchange::field(gridForce_)
+            });
+        }
+    }
     gridVelocityFromMomentum(gridVelocityOld_);
+    if (parallel && (usf || transfer_ == transferType::FLIP))
+    {
+        // (read in the halo by USF's stress update and FLIP's G2P only)
+        halo.copyToHalo({haloExchange::field(gridVelocityOld_)});
+    }
     mirrorGhosts(gridVelocityOld_);
 
     if (usf)
     {
         updateStresses(gridVelocityOld_, dt);
         p2gForces();
+        foldGhosts(gridForce_, false);
+        if (parallel)
+        {
+            halo.addToOwners({haloExchange::field(gridForce_)});
+        }
     }
-    foldGhosts(gridForce_, false);
 
     if (localDamping_ > 0)
     {
@@ -769,9 +893,18 @@ void Foam::materialPointSoil::subStep(const scalar dt)
           : Zero;
     }
     applyContact(gridVelocity_);
+    if (parallel)
+    {
+        halo.copyToHalo({haloExchange::field(gridVelocity_)});
+    }
     mirrorGhosts(gridVelocity_);
 
     g2p(dt);
+
+    if (parallel)
+    {
+        migrate();
+    }
 
     if (update_ == updateType::MUSL)
     {
@@ -780,9 +913,21 @@ void Foam::materialPointSoil::subStep(const scalar dt)
         clearGrid();
         p2gMassMomentum(false);
         foldGhosts(gridMomentum_, true);
+        if (parallel)
+        {
+            halo.addToOwners
+            ({
+                haloExchange::field(gridMass_),
+                haloExchange::field(gridMomentum_)
+            });
+        }
         List<vector> vel(gridVelocity_.size());
         gridVelocityFromMomentum(vel);
         applyContact(vel);
+        if (parallel)
+        {
+            halo.copyToHalo({haloExchange::field(vel)});
+        }
         mirrorGhosts(vel);
         updateStresses(vel, dt);
     }
@@ -830,18 +975,13 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     (
         lattice.periodic()[0] || lattice.periodic()[1] || lattice.periodic()[2]
     ),
+    hasPointForces_(false),
     nClamped_(0),
     nSubSteps_(0),
     subDt_(0),
-    nTotalSubSteps_(0)
+    nTotalSubSteps_(0),
+    pointUpdates_(0)
 {
-    if (Pstream::parRun())
-    {
-        FatalErrorInFunction
-            << "The soil (material point method) runs serially in this"
-            << " version: run without -parallel, or without the soil effect"
-            << exit(FatalError);
-    }
     if (lattice_.haloWidth() < shape_->reach())
     {
         FatalErrorInFunction
@@ -891,6 +1031,20 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     gridVelocityOld_.setSize(nBox, Zero);
     buildGhosts();
 
+    // The owner of every node a point can move into
+    nodeOwner_.setSize(nBox, -1);
+    for (const label n : lattice_.cellNode())
+    {
+        nodeOwner_[n] = Pstream::myProcNo();
+    }
+    forAll(lattice_.halo().recvNodes(), proci)
+    {
+        for (const label n : lattice_.halo().recvNodes()[proci])
+        {
+            nodeOwner_[n] = proci;
+        }
+    }
+
     // Points
     if (!points_.read(mesh_, mesh_.time().timeName()))
     {
@@ -914,7 +1068,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     }
 
     Info<< "Material point soil" << nl
-        << "    points       " << points_.size() << " ("
+        << "    points       " << nPoints() << " ("
         << materialPoints::memoryPerPoint() << " bytes per point)" << nl
         << "    shape function " << shape_->type() << ", transfer "
         << transferTypeNames[transfer_];
@@ -959,24 +1113,35 @@ void Foam::materialPointSoil::advance(const scalar deltaT)
         subStep(subDt_);
     }
     nTotalSubSteps_ += nSubSteps_;
+    pointUpdates_ += scalar(nSubSteps_)*nPoints();
 
-    if (nClamped_)
+    const label nClamped = returnReduce(nClamped_, sumOp<label>());
+    if (nClamped)
     {
         WarningInFunction
-            << nClamped_ << " material point moves out of the domain were"
+            << nClamped << " material point moves out of the domain were"
             << " stopped at the boundary at time " << mesh_.time().timeName()
             << " s" << endl;
-        nClamped_ = 0;
     }
+    nClamped_ = 0;
+}
+
+
+Foam::label Foam::materialPointSoil::nPoints() const
+{
+    return returnReduce(points_.size(), sumOp<label>());
 }
 
 
 Foam::scalar Foam::materialPointSoil::memoryBytes() const
 {
-    return
+    return returnReduce
+    (
         scalar(points_.size())
        *(materialPoints::memoryPerPoint() + sizeof(shapeWeights))
-      + scalar(lattice_.nBox())*(sizeof(scalar) + 4*sizeof(vector));
+      + scalar(lattice_.nBox())*(sizeof(scalar) + 4*sizeof(vector)),
+        sumOp<scalar>()
+    );
 }
 
 
@@ -1030,11 +1195,35 @@ void Foam::materialPointSoil::nodalFields
         velocity[w] = Zero;
     }
 
+    // Parallel: the halo nodes' shares to their owners
+    const bool parallel = Pstream::parRun();
+    if (parallel)
+    {
+        lattice_.halo().addToOwners
+        ({
+            haloExchange::field(phi),
+            haloExchange::field(mass),
+            haloExchange::field(velocity)
+        });
+    }
+
     const scalar invV = 1.0/lattice_.cellVolume();
     forAll(phi, n)
     {
         phi[n] = min(phi[n]*invV, 0.99);
         velocity[n] = mass[n] > VSMALL ? velocity[n]/mass[n] : Zero;
+    }
+
+    // ... and the totals back into the halo: addNodeForces shares a halo
+    // node's force by its total mass
+    if (parallel)
+    {
+        lattice_.halo().copyToHalo
+        ({
+            haloExchange::field(phi),
+            haloExchange::field(mass),
+            haloExchange::field(velocity)
+        });
     }
 }
 
@@ -1047,13 +1236,26 @@ void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
     // receive exactly the total force, and through P2G, the grid update
     // and G2P the impulse dt sum(f) reaches the points' momentum exactly
     // (partition of unity)
-    if (pointForce_.size() != points_.size())
+    if (!hasPointForces_ || pointForce_.size() != points_.size())
     {
         pointForce_.setSize(points_.size());
         pointForce_ = Zero;
     }
+    hasPointForces_ = true;
+
+    // Parallel: the points near a processor boundary take shares of the
+    // neighbour's nodes, whose forces are copied into the halo
+    List<vector> haloForce;
+    if (Pstream::parRun())
+    {
+        haloForce = nodeForce;
+        lattice_.halo().copyToHalo({haloExchange::field(haloForce)});
+    }
+    const List<vector>& force = Pstream::parRun() ? haloForce : nodeForce;
+
     // (a point's weight on a node beyond a wall was folded into the node
-    // inside: it takes its share of that node's force through it)
+    // inside: it takes its share of that node's force through it; in
+    // parallel that node may be a halo node)
     forAll(points_.x, p)
     {
         const scalar mp = points_.m[p];
@@ -1065,7 +1267,7 @@ void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
                 const label n = ghostImage_[lattice_.node(i, j, k)];
                 if (nodeMass_[n] > 0)
                 {
-                    f += (N*mp/nodeMass_[n])*nodeForce[n];
+                    f += (N*mp/nodeMass_[n])*force[n];
                 }
             }
         );
@@ -1095,7 +1297,7 @@ Foam::scalar Foam::materialPointSoil::minPorosity() const
     {
         n = min(n, np);
     }
-    return n;
+    return returnReduce(n, minOp<scalar>());
 }
 
 
@@ -1105,6 +1307,10 @@ Foam::vector Foam::materialPointSoil::momentum() const
     forAll(points_.v, p)
     {
         sum += points_.m[p]*points_.v[p];
+    }
+    if (Pstream::parRun())
+    {
+        reduce(sum, sumOp<vector>());
     }
     return sum;
 }
@@ -1116,6 +1322,12 @@ Foam::scalar Foam::materialPointSoil::kineticEnergy() const
     forAll(points_.v, p)
     {
         e += 0.5*points_.m[p]*magSqr(points_.v[p]);
+    }
+    // (reduced only in parallel: the serial sum stays as it was, to the
+    // bit, whatever the compiler makes of the loop)
+    if (Pstream::parRun())
+    {
+        reduce(e, sumOp<scalar>());
     }
     return e;
 }

@@ -14,6 +14,9 @@ License
 #include "materialPoints.H"
 #include "passiveParticleCloud.H"
 #include "IOField.H"
+#include "globalIndex.H"
+#include "PstreamBuffers.H"
+#include "DynamicList.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -101,6 +104,7 @@ void Foam::materialPoints::setSize(const label n)
     material.setSize(n);
     halfLength.setSize(n);
     porosity.setSize(n);
+    id.setSize(n);
 }
 
 
@@ -130,6 +134,7 @@ void Foam::materialPoints::append
     material[i] = materialIndex;
     halfLength[i] = halfSize;
     porosity[i] = pointPorosity;
+    id[i] = i;
 }
 
 
@@ -140,7 +145,110 @@ Foam::label Foam::materialPoints::memoryPerPoint()
       + 2*sizeof(tensor)           // F, C
       + sizeof(symmTensor)         // sigma
       + 5*sizeof(scalar)           // m, V, V0, plasticStrain, porosity
-      + sizeof(label);             // material
+      + sizeof(label);             // material (id: in the spare)
+}
+
+
+void Foam::materialPoints::migrate
+(
+    const labelUList& toProc,
+    List<vector>* extra
+)
+{
+    const label nProcs = Pstream::nProcs();
+    const label n = size();
+
+    List<DynamicList<label>> leaving(nProcs);
+    forAll(toProc, p)
+    {
+        if (toProc[p] >= 0)
+        {
+            leaving[toProc[p]].append(p);
+        }
+    }
+
+    // Send every quantity of the leaving points, in one message per
+    // processor
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(leaving, proci)
+    {
+        if (leaving[proci].empty())
+        {
+            continue;
+        }
+        const labelList idx(leaving[proci]);
+        UOPstream os(proci, pBufs);
+        auto put = [&](const auto& values)
+        {
+            typedef typename std::decay<decltype(values[0])>::type Type;
+            os << List<Type>(UIndirectList<Type>(values, idx));
+        };
+        put(x); put(v); put(m); put(V); put(V0); put(F); put(sigma);
+        put(plasticStrain); put(C); put(material); put(halfLength);
+        put(porosity); put(id);
+        if (extra)
+        {
+            put(*extra);
+        }
+    }
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    // Keep the others, in their order
+    label k = 0;
+    for (label p = 0; p < n; ++p)
+    {
+        if (toProc[p] >= 0)
+        {
+            continue;
+        }
+        if (k != p)
+        {
+            x[k] = x[p]; v[k] = v[p]; m[k] = m[p]; V[k] = V[p];
+            V0[k] = V0[p]; F[k] = F[p]; sigma[k] = sigma[p];
+            plasticStrain[k] = plasticStrain[p]; C[k] = C[p];
+            material[k] = material[p]; halfLength[k] = halfLength[p];
+            porosity[k] = porosity[p]; id[k] = id[p];
+            if (extra)
+            {
+                (*extra)[k] = (*extra)[p];
+            }
+        }
+        ++k;
+    }
+    setSize(k);
+    if (extra)
+    {
+        extra->setSize(k);
+    }
+
+    // Append the arrivals by sending processor
+    forAll(recvSizes, proci)
+    {
+        if (!recvSizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, pBufs);
+        auto get = [&](auto& values)
+        {
+            typedef typename std::decay<decltype(values[0])>::type Type;
+            List<Type> in(is);
+            const label start = values.size();
+            values.setSize(start + in.size());
+            forAll(in, i)
+            {
+                values[start + i] = in[i];
+            }
+        };
+        get(x); get(v); get(m); get(V); get(V0); get(F); get(sigma);
+        get(plasticStrain); get(C); get(material); get(halfLength);
+        get(porosity); get(id);
+        if (extra)
+        {
+            get(*extra);
+        }
+    }
 }
 
 
@@ -158,19 +266,44 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
     );
     IOobject coordIO(posIO);
     coordIO.rename("coordinates");
-    if
-    (
-        !posIO.typeHeaderOk<IOField<vector>>(false)
-     && !coordIO.typeHeaderOk<IOField<vector>>(false)
-    )
+    const bool here =
+        posIO.typeHeaderOk<IOField<vector>>(false)
+     || coordIO.typeHeaderOk<IOField<vector>>(false);
+    if (!returnReduce(here, orOp<bool>()))
     {
         return false;
     }
 
+    // (on every processor, those without points too: the cloud's
+    // construction is collective)
     passiveParticleCloud cloud(mesh, cloudName, false);
     const label n = cloud.size();
     setSize(n);
+    bool haveIds = true;
+    if (n)
+    {
+        readFields(cloud, mesh.time().path()/timeName);
+        haveIds = readField(cloud, "origId", id);
+    }
+    if (!returnReduce(haveIds, andOp<bool>()))
+    {
+        // (a cloud from elsewhere: numbered in processor order)
+        const globalIndex offsets(n);
+        forAll(id, i)
+        {
+            id[i] = offsets.toGlobal(i);
+        }
+    }
+    return true;
+}
 
+
+void Foam::materialPoints::readFields
+(
+    const passiveParticleCloud& cloud,
+    const fileName& where
+)
+{
     // Positions from the cloud, unless the exact binary copy is there
     if (!readField(cloud, "x", x))
     {
@@ -186,7 +319,7 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
         if (!readField(cloud, name, values))
         {
             FatalErrorInFunction
-                << "The material points in " << mesh.time().path()/timeName
+                << "The material points in " << where
                 << "/lagrangian/" << cloudName << " have no field " << name
                 << ": write them with setMaterialPoints or mpmLbmFoam"
                 << exit(FatalError);
@@ -209,7 +342,6 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
     {
         C = Zero;
     }
-    return true;
 }
 
 
@@ -236,9 +368,20 @@ void Foam::materialPoints::write
                  : label(std::floor((x[i][d] - origin[d])/dx)) - bs[d];
         }
         const label celli = nodeCell[lattice.node(b.x(), b.y(), b.z())];
-        cloud.addParticle(new passiveParticle(mesh, x[i], celli));
+        passiveParticle* p = new passiveParticle(mesh, x[i], celli);
+
+        // The point's identity, the same whatever the decomposition
+        p->origProc() = 0;
+        p->origId() = id[i];
+        cloud.addParticle(p);
     }
     cloud.write();
+    if (!size())
+    {
+        // (a processor without points writes no cloud, as OpenFOAM's
+        // clouds and decomposePar)
+        return;
+    }
 
     // All in binary, whatever the case's format: a restart continues
     // exactly, and ParaView reads binary fields as well

@@ -356,4 +356,187 @@ void Foam::haloExchange::exchange(labelUList& data) const
 }
 
 
+void Foam::haloExchange::copyToHalo
+(
+    std::initializer_list<nodeField> fields
+) const
+{
+    const label myProc = Pstream::myProcNo();
+
+    // Periodic images on this processor: no communication
+    {
+        const labelList& send = sendNodes_[myProc];
+        const labelList& recv = recvNodes_[myProc];
+        for (const nodeField& f : fields)
+        {
+            const label nc = f.nComponents;
+            scalar* __restrict__ d = f.data;
+            forAll(send, i)
+            {
+                for (label c = 0; c < nc; ++c)
+                {
+                    d[recv[i]*nc + c] = d[send[i]*nc + c];
+                }
+            }
+        }
+    }
+
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    label nComp = 0;
+    for (const nodeField& f : fields)
+    {
+        nComp += f.nComponents;
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(sendNodes_, proci)
+    {
+        const labelList& send = sendNodes_[proci];
+        if (proci == myProc || send.empty())
+        {
+            continue;
+        }
+        scalarList buf(nComp*send.size());
+        label k = 0;
+        for (const nodeField& f : fields)
+        {
+            const label nc = f.nComponents;
+            const scalar* d = f.data;
+            forAll(send, i)
+            {
+                for (label c = 0; c < nc; ++c)
+                {
+                    buf[k++] = d[send[i]*nc + c];
+                }
+            }
+        }
+        UOPstream toProc(proci, pBufs);
+        toProc << buf;
+    }
+    pBufs.finishedSends();
+
+    forAll(recvNodes_, proci)
+    {
+        const labelList& recv = recvNodes_[proci];
+        if (proci == myProc || recv.empty())
+        {
+            continue;
+        }
+        scalarList buf;
+        UIPstream fromProc(proci, pBufs);
+        fromProc >> buf;
+        label k = 0;
+        for (const nodeField& f : fields)
+        {
+            const label nc = f.nComponents;
+            scalar* d = f.data;
+            forAll(recv, i)
+            {
+                for (label c = 0; c < nc; ++c)
+                {
+                    d[recv[i]*nc + c] = buf[k++];
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::haloExchange::addToOwners
+(
+    std::initializer_list<nodeField> fields
+) const
+{
+    const label myProc = Pstream::myProcNo();
+
+    // The images' values travel the copy's routes backwards: from the
+    // receiving halo nodes to the sending owner nodes. Periodic images on
+    // this processor first, then the other processors in rank order (a
+    // fixed order of the additions: the run repeats itself exactly)
+    {
+        const labelList& send = sendNodes_[myProc];
+        const labelList& recv = recvNodes_[myProc];
+        for (const nodeField& f : fields)
+        {
+            const label nc = f.nComponents;
+            scalar* __restrict__ d = f.data;
+            forAll(send, i)
+            {
+                for (label c = 0; c < nc; ++c)
+                {
+                    d[send[i]*nc + c] += d[recv[i]*nc + c];
+                }
+            }
+        }
+    }
+
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    label nComp = 0;
+    for (const nodeField& f : fields)
+    {
+        nComp += f.nComponents;
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(recvNodes_, proci)
+    {
+        const labelList& recv = recvNodes_[proci];
+        if (proci == myProc || recv.empty())
+        {
+            continue;
+        }
+        scalarList buf(nComp*recv.size());
+        label k = 0;
+        for (const nodeField& f : fields)
+        {
+            const label nc = f.nComponents;
+            const scalar* d = f.data;
+            forAll(recv, i)
+            {
+                for (label c = 0; c < nc; ++c)
+                {
+                    buf[k++] = d[recv[i]*nc + c];
+                }
+            }
+        }
+        UOPstream toProc(proci, pBufs);
+        toProc << buf;
+    }
+    pBufs.finishedSends();
+
+    forAll(sendNodes_, proci)
+    {
+        const labelList& send = sendNodes_[proci];
+        if (proci == myProc || send.empty())
+        {
+            continue;
+        }
+        scalarList buf;
+        UIPstream fromProc(proci, pBufs);
+        fromProc >> buf;
+        label k = 0;
+        for (const nodeField& f : fields)
+        {
+            const label nc = f.nComponents;
+            scalar* d = f.data;
+            forAll(send, i)
+            {
+                for (label c = 0; c < nc; ++c)
+                {
+                    d[send[i]*nc + c] += buf[k++];
+                }
+            }
+        }
+    }
+}
+
+
 // ************************************************************************* //

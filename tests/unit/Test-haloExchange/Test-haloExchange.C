@@ -22,7 +22,12 @@ Description
     - every node within the halo width of an owned node is owned, halo or
       wall (none is missing), and wall nodes are exactly those outside the
       domain;
-    - the owned nodes of all processors cover the global lattice once.
+    - the owned nodes of all processors cover the global lattice once;
+    - copyToHalo of node-major lists (a scalarList and a List<vector> in
+      one message) gives the halo nodes the owners' values;
+    - addToOwners adds every halo image's value to its owner node: with 1
+      at every halo node, each owned node receives exactly the number of
+      its images on all processors (periodic ones included).
     Prints PASS:/FAIL: lines (from the master); exits 1 on any failure.
 
 \*---------------------------------------------------------------------------*/
@@ -129,6 +134,55 @@ int main(int argc, char *argv[])
             }
         }
 
+        // Node-major lists: a scalar and a vector list in one message
+        scalarList sv(nBox, -1.0);
+        List<vector> vv(nBox, vector::one*(-1));
+        for (const label n : lat.cellNode())
+        {
+            bool inside;
+            const scalar g = wrapped(lat.globalIjk(n), inside);
+            sv[n] = g;
+            vv[n] = vector(g, -g, 2*g);
+        }
+        lat.halo().copyToHalo
+        ({
+            haloExchange::field(sv), haloExchange::field(vv)
+        });
+        label nBadCopy = 0;
+        for (label n = 0; n < nBox; ++n)
+        {
+            if (kind[n] != latticeMesh::HALO) continue;
+            bool inside;
+            const scalar g = wrapped(lat.globalIjk(n), inside);
+            if (sv[n] != g || vv[n] != vector(g, -g, 2*g)) ++nBadCopy;
+        }
+
+        // Reverse: 1 at every halo node, 0 at owned nodes; the owners
+        // must receive the number of their images on all processors
+        scalarList count(nBox, 0.0);
+        labelList images(lat.nGlobalBox(), 0);
+        for (label n = 0; n < nBox; ++n)
+        {
+            if (kind[n] == latticeMesh::HALO)
+            {
+                count[n] = 1;
+                bool inside;
+                ++images[wrapped(lat.globalIjk(n), inside)];
+            }
+        }
+        Pstream::listCombineGather(images, plusEqOp<label>());
+        Pstream::listCombineScatter(images);
+        lat.halo().addToOwners({haloExchange::field(count)});
+        label nBadSum = 0;
+        for (const label n : lat.cellNode())
+        {
+            bool inside;
+            if (count[n] != images[wrapped(lat.globalIjk(n), inside)])
+            {
+                ++nBadSum;
+            }
+        }
+
         const label nOwned = returnReduce(lat.nOwned(), sumOp<label>());
         const word w = "width " + Foam::name(width) + ", " + decomp;
         check
@@ -149,6 +203,18 @@ int main(int argc, char *argv[])
             nWrongWall == 0,
             "wall nodes are exactly those outside the domain, " + w,
             Foam::name(returnReduce(nWrongWall, sumOp<label>())) + " wrong"
+        );
+        check
+        (
+            nBadCopy == 0,
+            "copyToHalo of node-major lists, " + w,
+            Foam::name(returnReduce(nBadCopy, sumOp<label>())) + " wrong"
+        );
+        check
+        (
+            nBadSum == 0,
+            "addToOwners: every owner receives its images' values, " + w,
+            Foam::name(returnReduce(nBadSum, sumOp<label>())) + " wrong"
         );
         check
         (

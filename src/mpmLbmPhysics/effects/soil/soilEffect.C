@@ -50,7 +50,7 @@ void Foam::physicsEffects::soil::write()
 
 Foam::scalar Foam::physicsEffects::soil::updatesPerStep() const
 {
-    return mpm_.points().size();
+    return mpm_.nPoints();
 }
 
 
