@@ -16,6 +16,8 @@ License
 #include "emptyPolyPatch.H"
 #include "DynamicList.H"
 
+#include <type_traits>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -485,49 +487,418 @@ void Foam::materialPointSoil::computeWeights()
 }
 
 
-void Foam::materialPointSoil::p2gMassMomentum(const bool withForces)
+inline void Foam::materialPointSoil::updateVolume(const label p)
 {
+    // The grains are incompressible: the solid volume (1 - n) V of a point
+    // is kept as it dilates or compacts, so its porosity n changes (a
+    // point never holds more grains than its volume)
+    const scalar Vold = points_.V[p];
+    points_.V[p] = det(points_.F[p])*points_.V0[p];
+    points_.porosity[p] =
+        max(1 - (1 - points_.porosity[p])*Vold/points_.V[p], 0.0);
+}
+
+
+// * * * * * * * * * * * * * * * * Point loops * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+template<Foam::label N>
+using labelConstant = std::integral_constant<Foam::label, N>;
+
+//- Call k(S, D) with the support S (nodes per direction) and the dimension
+//  D as compile-time constants, so that the kernels' node loops unroll
+template<class Kernel>
+inline void withSupport(const Foam::label S, const Foam::label D, Kernel&& k)
+{
+    if (D == 3)
+    {
+        switch (S)
+        {
+            case 2: k(labelConstant<2>(), labelConstant<3>()); return;
+            case 3: k(labelConstant<3>(), labelConstant<3>()); return;
+            case 4: k(labelConstant<4>(), labelConstant<3>()); return;
+        }
+    }
+    else
+    {
+        switch (S)
+        {
+            case 2: k(labelConstant<2>(), labelConstant<2>()); return;
+            case 3: k(labelConstant<3>(), labelConstant<2>()); return;
+            case 4: k(labelConstant<4>(), labelConstant<2>()); return;
+        }
+    }
+    FatalErrorInFunction
+        << "No transfer kernel for " << S << " nodes per direction in "
+        << D << "D (2, 3 or 4 nodes are built)" << Foam::abort(Foam::FatalError);
+}
+
+//- Column j of a tensor
+inline Foam::vector column(const Foam::tensor& T, const Foam::direction j)
+{
+    return Foam::vector(T(0, j), T(1, j), T(2, j));
+}
+
+} // End anonymous namespace
+
+
+template<Foam::label S, Foam::label D, bool Apic, bool Forces>
+void Foam::materialPointSoil::p2gPoints(const vector& g)
+{
+    // Per node of point p, weight N, gradient (lattice units) gradN:
+    //     mass     += N m
+    //     momentum += N m (v + C r),  r = node - point  (APIC; else N m v)
+    //     force    += N m g (+ N f_ext) - V sigma.gradN/dx
+    // with gradN = (w'x wy wz, wx w'y wz, wx wy w'z). The point's factors
+    // are formed once: mC dx, -V sigma/dx and their products with the
+    // x-direction weights, then each node costs a few multiply-adds.
+    constexpr label SZ = (D == 3 ? S : 1);
     const scalar dx = lattice_.dx();
     const scalar invDx = 1.0/dx;
-    const bool apic = (transfer_ == transferType::APIC);
-    const scalar ramp =
-        (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
-    const vector g = ramp*gravity_;
+    const label sy = lattice_.stride().y();
+    const label sz = lattice_.stride().z();
     const vector* fExt = pointForce_.size() ? pointForce_.cdata() : nullptr;
 
-    forAll(points_.x, p)
+    scalar* __restrict__ mass = gridMass_.data();
+    vector* __restrict__ momentum = gridMomentum_.data();
+    vector* __restrict__ force = gridForce_.data();
+
+    const label nPoints = points_.size();
+    for (label p = 0; p < nPoints; ++p)
     {
         const shapeWeights& sw = weights_[p];
-        const vector xl = latticeCoordinates(points_.x[p]);
         const scalar mp = points_.m[p];
-        const vector& vp = points_.v[p];
-        const tensor& Cp = points_.C[p];
-        const symmTensor& s = points_.sigma[p];
-        const scalar Vp = points_.V[p];
-        const vector mg = fExt ? mp*g + fExt[p] : mp*g;
-        sw.forEachNode
-        (
-            [&](label i, label j, label k, scalar N, const vector& gradN)
+        const vector mv(mp*points_.v[p]);
+        const scalar* wx = sw.w[0];
+        const scalar* dwx = sw.dw[0];
+
+        // Momentum of node a of a row, before the row's (y, z) part
+        vector momA[S];
+        tensor mCdx(Zero);
+        scalar ry[S], rz[SZ];
+        if constexpr (Apic)
+        {
+            const vector xl(latticeCoordinates(points_.x[p]));
+            mCdx = (mp*dx)*points_.C[p];
+            const vector cx(column(mCdx, 0));
+            for (label a = 0; a < S; ++a)
             {
-                const label n = lattice_.node(i, j, k);
-                gridMass_[n] += N*mp;
-                if (apic)
+                momA[a] = mv + cx*(sw.first.x() + a - xl.x());
+                ry[a] = sw.first.y() + a - xl.y();
+            }
+            for (label c = 0; c < SZ; ++c)
+            {
+                rz[c] = sw.first.z() + c - xl.z();
+            }
+        }
+        else
+        {
+            for (label a = 0; a < S; ++a)
+            {
+                momA[a] = mv;
+            }
+        }
+
+        vector mg(Zero), Bx(Zero), By(Zero), Bz(Zero);
+        vector forceA[S];
+        if constexpr (Forces)
+        {
+            mg = fExt ? mp*g + fExt[p] : mp*g;
+            const symmTensor B(-(points_.V[p]*invDx)*points_.sigma[p]);
+            Bx = vector(B.xx(), B.xy(), B.xz());
+            By = vector(B.xy(), B.yy(), B.yz());
+            Bz = vector(B.xz(), B.yz(), B.zz());
+            for (label a = 0; a < S; ++a)
+            {
+                forceA[a] = Bx*dwx[a];
+            }
+        }
+
+        const label base = lattice_.node(sw.first.x(), sw.first.y(), sw.first.z());
+        for (label c = 0; c < SZ; ++c)
+        {
+            const scalar wz = sw.w[2][c];
+            const scalar dwz = sw.dw[2][c];
+            for (label b = 0; b < S; ++b)
+            {
+                const scalar wy = sw.w[1][b];
+                const scalar wyz = wy*wz;
+                const label row = base + b*sy + c*sz;
+
+                vector momRow(Zero);
+                if constexpr (Apic)
                 {
-                    const vector r((i - xl.x())*dx, (j - xl.y())*dx,
-                                   (k - xl.z())*dx);
-                    gridMomentum_[n] += N*mp*(vp + (Cp & r));
+                    momRow =
+                        column(mCdx, 1)*ry[b]
+                      + (D == 3 ? column(mCdx, 2)*rz[c] : vector::zero);
                 }
-                else
+                vector forceRow(Zero);
+                if constexpr (Forces)
                 {
-                    gridMomentum_[n] += N*mp*vp;
+                    forceRow = By*(sw.dw[1][b]*wz);
+                    if constexpr (D == 3)
+                    {
+                        forceRow += Bz*(wy*dwz);
+                    }
                 }
-                if (withForces)
+
+                for (label a = 0; a < S; ++a)
                 {
-                    gridForce_[n] += N*mg - Vp*(s & (gradN*invDx));
+                    const label n = row + a;
+                    const scalar N = wx[a]*wyz;
+                    mass[n] += N*mp;
+                    momentum[n] += N*(momA[a] + momRow);
+                    if constexpr (Forces)
+                    {
+                        force[n] += N*mg + wyz*forceA[a] + wx[a]*forceRow;
+                    }
                 }
             }
-        );
+        }
     }
+}
+
+
+template<Foam::label S, Foam::label D>
+void Foam::materialPointSoil::p2gForcePoints(const vector& g)
+{
+    // The force part of p2gPoints (USF: after the stress update)
+    constexpr label SZ = (D == 3 ? S : 1);
+    const scalar invDx = 1.0/lattice_.dx();
+    const label sy = lattice_.stride().y();
+    const label sz = lattice_.stride().z();
+    const vector* fExt = pointForce_.size() ? pointForce_.cdata() : nullptr;
+    vector* __restrict__ force = gridForce_.data();
+
+    const label nPoints = points_.size();
+    for (label p = 0; p < nPoints; ++p)
+    {
+        const shapeWeights& sw = weights_[p];
+        const scalar mp = points_.m[p];
+        const vector mg(fExt ? mp*g + fExt[p] : mp*g);
+        const symmTensor B(-(points_.V[p]*invDx)*points_.sigma[p]);
+        const vector Bx(B.xx(), B.xy(), B.xz());
+        const vector By(B.xy(), B.yy(), B.yz());
+        const vector Bz(B.xz(), B.yz(), B.zz());
+        const scalar* wx = sw.w[0];
+        vector forceA[S];
+        for (label a = 0; a < S; ++a)
+        {
+            forceA[a] = Bx*sw.dw[0][a];
+        }
+        const label base = lattice_.node(sw.first.x(), sw.first.y(), sw.first.z());
+        for (label c = 0; c < SZ; ++c)
+        {
+            const scalar wz = sw.w[2][c];
+            const scalar dwz = sw.dw[2][c];
+            for (label b = 0; b < S; ++b)
+            {
+                const scalar wy = sw.w[1][b];
+                const scalar wyz = wy*wz;
+                vector forceRow(By*(sw.dw[1][b]*wz));
+                if constexpr (D == 3)
+                {
+                    forceRow += Bz*(wy*dwz);
+                }
+                const label row = base + b*sy + c*sz;
+                for (label a = 0; a < S; ++a)
+                {
+                    force[row + a] +=
+                        (wx[a]*wyz)*mg + wyz*forceA[a] + wx[a]*forceRow;
+                }
+            }
+        }
+    }
+}
+
+
+template<Foam::label S, Foam::label D, bool Flip>
+void Foam::materialPointSoil::g2pPoints(const scalar dt)
+{
+    // Per point: v = sum N v_n, L = sum v_n gradN/dx (and FLIP's
+    // sum N (v_n - v_n,old)). Along a row of nodes the sums of w_x v_n and
+    // w'_x v_n serve every term: six multiply-adds per node
+    constexpr label SZ = (D == 3 ? S : 1);
+    const scalar invDx = 1.0/lattice_.dx();
+    const label sy = lattice_.stride().y();
+    const label sz = lattice_.stride().z();
+    const bool stressHere = (update_ == updateType::USL);
+    const bool apic = (transfer_ == transferType::APIC);
+    const scalar alpha = flipRatio_;
+    const vector* __restrict__ vel = gridVelocity_.cdata();
+    const vector* __restrict__ velOld = gridVelocityOld_.cdata();
+
+    const label nPoints = points_.size();
+    for (label p = 0; p < nPoints; ++p)
+    {
+        const shapeWeights& sw = weights_[p];
+        const scalar* wx = sw.w[0];
+        const scalar* dwx = sw.dw[0];
+        vector vPic(Zero), dv(Zero), Lx(Zero), Ly(Zero), Lz(Zero);
+        const label base = lattice_.node(sw.first.x(), sw.first.y(), sw.first.z());
+        for (label c = 0; c < SZ; ++c)
+        {
+            const scalar wz = sw.w[2][c];
+            const scalar dwz = sw.dw[2][c];
+            for (label b = 0; b < S; ++b)
+            {
+                const scalar wy = sw.w[1][b];
+                const label row = base + b*sy + c*sz;
+                vector sumW(Zero), sumDw(Zero), sumDv(Zero);
+                for (label a = 0; a < S; ++a)
+                {
+                    const vector& vn = vel[row + a];
+                    sumW += wx[a]*vn;
+                    sumDw += dwx[a]*vn;
+                    if constexpr (Flip)
+                    {
+                        sumDv += wx[a]*(vn - velOld[row + a]);
+                    }
+                }
+                const scalar wyz = wy*wz;
+                vPic += wyz*sumW;
+                Lx += wyz*sumDw;
+                Ly += (sw.dw[1][b]*wz)*sumW;
+                if constexpr (D == 3)
+                {
+                    Lz += (wy*dwz)*sumW;
+                }
+                if constexpr (Flip)
+                {
+                    dv += wyz*sumDv;
+                }
+            }
+        }
+        const tensor L
+        (
+            invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
+            invDx*Lx.y(), invDx*Ly.y(), invDx*Lz.y(),
+            invDx*Lx.z(), invDx*Ly.z(), invDx*Lz.z()
+        );
+
+        if constexpr (Flip)
+        {
+            points_.v[p] = alpha*(points_.v[p] + dv) + (1 - alpha)*vPic;
+        }
+        else
+        {
+            points_.v[p] = vPic;
+            if (apic)
+            {
+                points_.C[p] = L;
+            }
+        }
+
+        if (stressHere)
+        {
+            updatePointStress(p, L, dt);
+        }
+
+        points_.x[p] += dt*vPic;
+        if (clamp(points_.x[p]))
+        {
+            ++nClamped_;
+        }
+    }
+}
+
+
+template<Foam::label S, Foam::label D>
+void Foam::materialPointSoil::stressPoints
+(
+    const List<vector>& vel,
+    const scalar dt
+)
+{
+    constexpr label SZ = (D == 3 ? S : 1);
+    const scalar invDx = 1.0/lattice_.dx();
+    const label sy = lattice_.stride().y();
+    const label sz = lattice_.stride().z();
+    const vector* __restrict__ v = vel.cdata();
+
+    const label nPoints = points_.size();
+    for (label p = 0; p < nPoints; ++p)
+    {
+        const shapeWeights& sw = weights_[p];
+        const scalar* wx = sw.w[0];
+        const scalar* dwx = sw.dw[0];
+        vector Lx(Zero), Ly(Zero), Lz(Zero);
+        const label base = lattice_.node(sw.first.x(), sw.first.y(), sw.first.z());
+        for (label c = 0; c < SZ; ++c)
+        {
+            const scalar wz = sw.w[2][c];
+            const scalar dwz = sw.dw[2][c];
+            for (label b = 0; b < S; ++b)
+            {
+                const scalar wy = sw.w[1][b];
+                const label row = base + b*sy + c*sz;
+                vector sumW(Zero), sumDw(Zero);
+                for (label a = 0; a < S; ++a)
+                {
+                    sumW += wx[a]*v[row + a];
+                    sumDw += dwx[a]*v[row + a];
+                }
+                Lx += (wy*wz)*sumDw;
+                Ly += (sw.dw[1][b]*wz)*sumW;
+                if constexpr (D == 3)
+                {
+                    Lz += (wy*dwz)*sumW;
+                }
+            }
+        }
+        const tensor L
+        (
+            invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
+            invDx*Lx.y(), invDx*Ly.y(), invDx*Lz.y(),
+            invDx*Lx.z(), invDx*Ly.z(), invDx*Lz.z()
+        );
+        updatePointStress(p, L, dt);
+    }
+}
+
+
+inline void Foam::materialPointSoil::updatePointStress
+(
+    const label p,
+    const tensor& L,
+    const scalar dt
+)
+{
+    // Jaumann rotation, then the constitutive update
+    const tensor W(skew(L));
+    symmTensor& s = points_.sigma[p];
+    s += dt*symm((W & s) - (s & W));
+    materials_[points_.material[p]].updateStress
+    (
+        symm(L)*dt, s, points_.plasticStrain[p]
+    );
+    points_.F[p] = (tensor::I + dt*L) & points_.F[p];
+    updateVolume(p);
+}
+
+
+void Foam::materialPointSoil::p2gMassMomentum(const bool withForces)
+{
+    const scalar ramp =
+        (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
+    const vector g(ramp*gravity_);
+    const bool apic = (transfer_ == transferType::APIC);
+
+    withSupport
+    (
+        shape_->support(), lattice_.nDim(),
+        [&](auto S, auto D)
+        {
+            constexpr label s = decltype(S)::value;
+            constexpr label d = decltype(D)::value;
+            if (apic && withForces) { p2gPoints<s, d, true, true>(g); }
+            else if (apic)          { p2gPoints<s, d, true, false>(g); }
+            else if (withForces)    { p2gPoints<s, d, false, true>(g); }
+            else                    { p2gPoints<s, d, false, false>(g); }
+        }
+    );
 }
 
 
@@ -582,27 +953,17 @@ void Foam::materialPointSoil::mirrorGhosts(List<vector>& vel) const
 
 void Foam::materialPointSoil::p2gForces()
 {
-    const scalar invDx = 1.0/lattice_.dx();
     const scalar ramp =
         (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
-    const vector g = ramp*gravity_;
-    const vector* fExt = pointForce_.size() ? pointForce_.cdata() : nullptr;
-
-    forAll(points_.x, p)
-    {
-        const shapeWeights& sw = weights_[p];
-        const symmTensor& s = points_.sigma[p];
-        const scalar Vp = points_.V[p];
-        const vector mg = fExt ? points_.m[p]*g + fExt[p] : points_.m[p]*g;
-        sw.forEachNode
-        (
-            [&](label i, label j, label k, scalar N, const vector& gradN)
-            {
-                const label n = lattice_.node(i, j, k);
-                gridForce_[n] += N*mg - Vp*(s & (gradN*invDx));
-            }
-        );
-    }
+    const vector g(ramp*gravity_);
+    withSupport
+    (
+        shape_->support(), lattice_.nDim(),
+        [&](auto S, auto D)
+        {
+            p2gForcePoints<decltype(S)::value, decltype(D)::value>(g);
+        }
+    );
 }
 
 
@@ -635,63 +996,18 @@ void Foam::materialPointSoil::applyContact(List<vector>& vel) const
 
 void Foam::materialPointSoil::g2p(const scalar dt)
 {
-    const scalar invDx = 1.0/lattice_.dx();
-    const bool stressHere = (update_ == updateType::USL);
-    const scalar alpha = (transfer_ == transferType::FLIP ? flipRatio_ : 0);
-
-    forAll(points_.x, p)
-    {
-        const shapeWeights& sw = weights_[p];
-
-        vector vPic(Zero), dv(Zero);
-        tensor L(Zero);
-        sw.forEachNode
-        (
-            [&](label i, label j, label k, scalar N, const vector& gradN)
-            {
-                const label n = lattice_.node(i, j, k);
-                const vector& vn = gridVelocity_[n];
-                vPic += N*vn;
-                dv += N*(vn - gridVelocityOld_[n]);
-                L += vn*(gradN*invDx);
-            }
-        );
-
-        switch (transfer_)
+    const bool flip = (transfer_ == transferType::FLIP);
+    withSupport
+    (
+        shape_->support(), lattice_.nDim(),
+        [&](auto S, auto D)
         {
-            case transferType::PIC:
-                points_.v[p] = vPic;
-                break;
-            case transferType::FLIP:
-                points_.v[p] = alpha*(points_.v[p] + dv) + (1 - alpha)*vPic;
-                break;
-            case transferType::APIC:
-                points_.v[p] = vPic;
-                points_.C[p] = L;
-                break;
+            constexpr label s = decltype(S)::value;
+            constexpr label d = decltype(D)::value;
+            if (flip) { g2pPoints<s, d, true>(dt); }
+            else      { g2pPoints<s, d, false>(dt); }
         }
-
-        if (stressHere)
-        {
-            // Jaumann rotation, then the constitutive update
-            const tensor W = skew(L);
-            symmTensor& s = points_.sigma[p];
-            s += dt*symm((W & s) - (s & W));
-            const symmTensor dEps = symm(L)*dt;
-            materials_[points_.material[p]].updateStress
-            (
-                dEps, s, points_.plasticStrain[p]
-            );
-            points_.F[p] = (tensor::I + dt*L) & points_.F[p];
-            updateVolume(p);
-        }
-
-        points_.x[p] += dt*vPic;
-        if (clamp(points_.x[p]))
-        {
-            ++nClamped_;
-        }
-    }
+    );
 }
 
 
@@ -701,41 +1017,14 @@ void Foam::materialPointSoil::updateStresses
     const scalar dt
 )
 {
-    const scalar invDx = 1.0/lattice_.dx();
-
-    forAll(points_.x, p)
-    {
-        const shapeWeights& sw = weights_[p];
-        tensor L(Zero);
-        sw.forEachNode
-        (
-            [&](label i, label j, label k, scalar, const vector& gradN)
-            {
-                L += vel[lattice_.node(i, j, k)]*(gradN*invDx);
-            }
-        );
-        const tensor W = skew(L);
-        symmTensor& s = points_.sigma[p];
-        s += dt*symm((W & s) - (s & W));
-        materials_[points_.material[p]].updateStress
-        (
-            symm(L)*dt, s, points_.plasticStrain[p]
-        );
-        points_.F[p] = (tensor::I + dt*L) & points_.F[p];
-        updateVolume(p);
-    }
-}
-
-
-inline void Foam::materialPointSoil::updateVolume(const label p)
-{
-    // The grains are incompressible: the solid volume (1 - n) V of a point
-    // is kept as it dilates or compacts, so its porosity n changes (a
-    // point never holds more grains than its volume)
-    const scalar Vold = points_.V[p];
-    points_.V[p] = det(points_.F[p])*points_.V0[p];
-    points_.porosity[p] =
-        max(1 - (1 - points_.porosity[p])*Vold/points_.V[p], 0.0);
+    withSupport
+    (
+        shape_->support(), lattice_.nDim(),
+        [&](auto S, auto D)
+        {
+            stressPoints<decltype(S)::value, decltype(D)::value>(vel, dt);
+        }
+    );
 }
 
 

@@ -32,6 +32,39 @@ namespace constitutiveModels
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Principal values of a symmetric tensor, descending, in closed form
+//  (trigonometric solution of the characteristic cubic; Smith 1961,
+//  Commun. ACM 4, 168). Absolute error a few ulps of the deviator's size
+//  (unlike its eigenvectors, which lose accuracy near repeated values):
+//  good for deciding that a state lies clearly inside the yield surface.
+inline Foam::vector principalValues(const Foam::symmTensor& A)
+{
+    using namespace Foam;
+    const scalar q = tr(A)/3;
+    const scalar offDiag = sqr(A.xy()) + sqr(A.xz()) + sqr(A.yz());
+    const scalar p2 =
+        sqr(A.xx() - q) + sqr(A.yy() - q) + sqr(A.zz() - q) + 2*offDiag;
+    if (p2 <= 0)
+    {
+        return vector(q, q, q);
+    }
+    const scalar p = std::sqrt(p2/6);
+    const symmTensor B((A - q*symmTensor::I)/p);
+    const scalar r = min(max(det(B)/2, scalar(-1)), scalar(1));
+    const scalar angle = std::acos(r)/3;
+    const scalar s1 = q + 2*p*std::cos(angle);
+    const scalar s3 = q + 2*p*std::cos(angle + 2*constant::mathematical::pi/3);
+    return vector(s1, 3*q - s1 - s3, s3);
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::constitutiveModels::MohrCoulomb::MohrCoulomb
@@ -460,6 +493,25 @@ Foam::constitutiveModels::MohrCoulomb::update
         (
             (k_ - 1)*p + (k_ + 1)*r - sigmaC_ <= 0
          && (!tensionActive_ || p + r <= sigmaT_)
+        )
+        {
+            stress = trial;
+            return elastic;
+        }
+    }
+
+    // Exact elastic test on principal values from the closed form: a state
+    // inside the surface by a margin far above their error (1e-10 of the
+    // stress scale) is elastic; states on or near the surface take the
+    // accurate eigen decomposition below
+    {
+        const vector sApprox(principalValues(trial));
+        const scalar margin =
+            1e-10*(mag(sApprox.x()) + mag(sApprox.z()) + sigmaC_);
+        if
+        (
+            yieldFunction(sApprox) <= -margin
+         && (!tensionActive_ || sApprox.x() <= sigmaT_ - margin)
         )
         {
             stress = trial;
