@@ -535,6 +535,65 @@ inline void withSupport(const Foam::label S, const Foam::label D, Kernel&& k)
         << D << "D (2, 3 or 4 nodes are built)" << Foam::abort(Foam::FatalError);
 }
 
+//- The sums of one point over its support nodes: vPic = sum N v_n,
+//  Lx, Ly, Lz = the columns of sum v_n gradN (lattice units) and, for FLIP,
+//  dv = sum N (v_n - v_n,old). Along a row of nodes the sums of w_x v_n
+//  and w'_x v_n serve every term: six multiply-adds per node
+template<Foam::label S, Foam::label D, bool Flip>
+inline void supportSums
+(
+    const Foam::shapeWeights& sw,
+    const Foam::label base,
+    const Foam::label sy,
+    const Foam::label sz,
+    const Foam::vector* __restrict__ vel,
+    const Foam::vector* __restrict__ velOld,
+    Foam::vector& vPic,
+    Foam::vector& dv,
+    Foam::vector& Lx,
+    Foam::vector& Ly,
+    Foam::vector& Lz
+)
+{
+    using namespace Foam;
+    constexpr label SZ = (D == 3 ? S : 1);
+    const scalar* wx = sw.w[0];
+    const scalar* dwx = sw.dw[0];
+    for (label c = 0; c < SZ; ++c)
+    {
+        const scalar wz = sw.w[2][c];
+        const scalar dwz = sw.dw[2][c];
+        for (label b = 0; b < S; ++b)
+        {
+            const scalar wy = sw.w[1][b];
+            const label row = base + b*sy + c*sz;
+            vector sumW(Zero), sumDw(Zero), sumDv(Zero);
+            for (label a = 0; a < S; ++a)
+            {
+                const vector& vn = vel[row + a];
+                sumW += wx[a]*vn;
+                sumDw += dwx[a]*vn;
+                if constexpr (Flip)
+                {
+                    sumDv += wx[a]*(vn - velOld[row + a]);
+                }
+            }
+            const scalar wyz = wy*wz;
+            vPic += wyz*sumW;
+            Lx += wyz*sumDw;
+            Ly += (sw.dw[1][b]*wz)*sumW;
+            if constexpr (D == 3)
+            {
+                Lz += (wy*dwz)*sumW;
+            }
+            if constexpr (Flip)
+            {
+                dv += wyz*sumDv;
+            }
+        }
+    }
+}
+
 //- Column j of a tensor
 inline Foam::vector column(const Foam::tensor& T, const Foam::direction j)
 {
@@ -718,59 +777,27 @@ template<Foam::label S, Foam::label D, bool Flip>
 void Foam::materialPointSoil::g2pPoints(const scalar dt)
 {
     // Per point: v = sum N v_n, L = sum v_n gradN/dx (and FLIP's
-    // sum N (v_n - v_n,old)). Along a row of nodes the sums of w_x v_n and
-    // w'_x v_n serve every term: six multiply-adds per node
-    constexpr label SZ = (D == 3 ? S : 1);
+    // sum N (v_n - v_n,old)), from supportSums
     const scalar invDx = 1.0/lattice_.dx();
     const label sy = lattice_.stride().y();
     const label sz = lattice_.stride().z();
     const bool stressHere = (update_ == updateType::USL);
     const bool apic = (transfer_ == transferType::APIC);
     const scalar alpha = flipRatio_;
-    const vector* __restrict__ vel = gridVelocity_.cdata();
-    const vector* __restrict__ velOld = gridVelocityOld_.cdata();
+    const vector* vel = gridVelocity_.cdata();
+    const vector* velOld = gridVelocityOld_.cdata();
 
     const label nPoints = points_.size();
     for (label p = 0; p < nPoints; ++p)
     {
         const shapeWeights& sw = weights_[p];
-        const scalar* wx = sw.w[0];
-        const scalar* dwx = sw.dw[0];
         vector vPic(Zero), dv(Zero), Lx(Zero), Ly(Zero), Lz(Zero);
-        const label base = lattice_.node(sw.first.x(), sw.first.y(), sw.first.z());
-        for (label c = 0; c < SZ; ++c)
-        {
-            const scalar wz = sw.w[2][c];
-            const scalar dwz = sw.dw[2][c];
-            for (label b = 0; b < S; ++b)
-            {
-                const scalar wy = sw.w[1][b];
-                const label row = base + b*sy + c*sz;
-                vector sumW(Zero), sumDw(Zero), sumDv(Zero);
-                for (label a = 0; a < S; ++a)
-                {
-                    const vector& vn = vel[row + a];
-                    sumW += wx[a]*vn;
-                    sumDw += dwx[a]*vn;
-                    if constexpr (Flip)
-                    {
-                        sumDv += wx[a]*(vn - velOld[row + a]);
-                    }
-                }
-                const scalar wyz = wy*wz;
-                vPic += wyz*sumW;
-                Lx += wyz*sumDw;
-                Ly += (sw.dw[1][b]*wz)*sumW;
-                if constexpr (D == 3)
-                {
-                    Lz += (wy*dwz)*sumW;
-                }
-                if constexpr (Flip)
-                {
-                    dv += wyz*sumDv;
-                }
-            }
-        }
+        supportSums<S, D, Flip>
+        (
+            sw,
+            lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
+            sy, sz, vel, velOld, vPic, dv, Lx, Ly, Lz
+        );
         const tensor L
         (
             invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
@@ -812,42 +839,21 @@ void Foam::materialPointSoil::stressPoints
     const scalar dt
 )
 {
-    constexpr label SZ = (D == 3 ? S : 1);
     const scalar invDx = 1.0/lattice_.dx();
     const label sy = lattice_.stride().y();
     const label sz = lattice_.stride().z();
-    const vector* __restrict__ v = vel.cdata();
 
     const label nPoints = points_.size();
     for (label p = 0; p < nPoints; ++p)
     {
         const shapeWeights& sw = weights_[p];
-        const scalar* wx = sw.w[0];
-        const scalar* dwx = sw.dw[0];
-        vector Lx(Zero), Ly(Zero), Lz(Zero);
-        const label base = lattice_.node(sw.first.x(), sw.first.y(), sw.first.z());
-        for (label c = 0; c < SZ; ++c)
-        {
-            const scalar wz = sw.w[2][c];
-            const scalar dwz = sw.dw[2][c];
-            for (label b = 0; b < S; ++b)
-            {
-                const scalar wy = sw.w[1][b];
-                const label row = base + b*sy + c*sz;
-                vector sumW(Zero), sumDw(Zero);
-                for (label a = 0; a < S; ++a)
-                {
-                    sumW += wx[a]*v[row + a];
-                    sumDw += dwx[a]*v[row + a];
-                }
-                Lx += (wy*wz)*sumDw;
-                Ly += (sw.dw[1][b]*wz)*sumW;
-                if constexpr (D == 3)
-                {
-                    Lz += (wy*dwz)*sumW;
-                }
-            }
-        }
+        vector vPic(Zero), dv(Zero), Lx(Zero), Ly(Zero), Lz(Zero);
+        supportSums<S, D, false>
+        (
+            sw,
+            lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
+            sy, sz, vel.cdata(), nullptr, vPic, dv, Lx, Ly, Lz
+        );
         const tensor L
         (
             invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
