@@ -684,6 +684,62 @@ static void testMohrCoulombSet(const mcSet& set)
             eCoax, tol);
     }
 
+    // 7b. Near-repeated principal values: the update (spectral projectors
+    //     from closed-form principal values where the gaps exceed 1e-5 of
+    //     the stress scale, the iterative eigen decomposition below) equals
+    //     the return rebuilt from the trial's eigenvectors (Eigen's QR
+    //     solver), for relative gaps from 1e-9 to 1e-1 across that switch
+    {
+        Random rnd(31);
+        scalar eRef = 0;
+        label nTrials = 0;
+        for (label t = 0; t < 4000; ++t)
+        {
+            const scalar gap = S*std::pow(10.0, -9 + 8*rnd.sample01<scalar>());
+            // Principal values with s1 - s2 (or s2 - s3) = gap, rotated
+            const scalar mean = -S*rnd.sample01<scalar>();
+            const scalar spread = 2*S*rnd.sample01<scalar>();
+            const vector sp =
+                (t % 2)
+              ? vector(mean + spread, mean + spread - gap, mean - spread)
+              : vector(mean + spread, mean - spread + gap, mean - spread);
+            const tensor R(randomRotation(rnd));
+            const symmTensor trial
+            (
+                transform(R, symmTensor(sp.x(), 0, 0, sp.y(), 0, sp.z()))
+            );
+            symmTensor s(trial);
+            scalar ep = 0;
+            mc.updateStress(symmTensor::zero, s, ep);
+
+            Eigen::Matrix3d A;
+            A <<
+                trial.xx(), trial.xy(), trial.xz(),
+                trial.xy(), trial.yy(), trial.yz(),
+                trial.xz(), trial.yz(), trial.zz();
+            const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A);
+            const Eigen::Matrix3d& V = eig.eigenvectors();
+            const vector sB
+            (
+                eig.eigenvalues()(2), eig.eigenvalues()(1), eig.eigenvalues()(0)
+            );
+            vector sC;
+            mc.principalReturn(sB, sC);
+            symmTensor ref(Zero);
+            for (label i = 0; i < 3; ++i)
+            {
+                const vector ni(V(0, 2 - i), V(1, 2 - i), V(2, 2 - i));
+                ref += sC[i]*sqr(ni);
+            }
+            eRef = max(eRef, maxMag(s - ref)/max(maxMag(trial), S));
+            ++nTrials;
+        }
+        check(eRef < tol, tag + " near-repeated principal values (gap 1e-9"
+            " to 1e-1 of the scale, " + std::to_string(nTrials)
+          + " trials): update = return rebuilt from the QR eigenvectors",
+            eRef, tol);
+    }
+
     // 8. Associated: closest point in the energy norm
     if (set.psi == set.phi)
     {

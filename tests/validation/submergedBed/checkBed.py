@@ -70,7 +70,7 @@ exact = rhoW * g * (y[top].mean() - y)
 err = np.abs(p - ptop - exact).max() / (rhoW * g * H)
 inSoil = y < Hs
 errSoil = np.abs(p - ptop - exact)[inSoil].max() / (rhoW * g * H)
-foamio.check_open(err <= 0.01, '%s: pore pressure hydrostatic in water and soil within 1%%'
+ok &= foamio.check(err <= 0.01, '%s: pore pressure hydrostatic in water and soil within 1%%'
                    % label, 'largest deviation %.2e of rho_w g H (in the soil %.2e), p(bottom) - '
                    'p(top) %.1f Pa vs %.1f' % (err, errSoil, p[y < dx].mean() - ptop,
                                                 rhoW * g * (y.max() - y.min())))
@@ -82,7 +82,7 @@ syy, sxx = s[:, 3], s[:, 0]
 deep = depth > 0.1 * Hs
 local = np.abs(syy[deep] + gammaP * depth[deep]) / (gammaP * depth[deep])
 rms = np.sqrt(np.mean((syy + gammaP * depth) ** 2)) / (gammaP * Hs)
-foamio.check_open(local.max() <= 0.02 and rms <= 0.02,
+ok &= foamio.check(local.max() <= 0.02 and rms <= 0.02,
                    "%s: effective stress sigma'_yy = gamma' depth (gamma' = %.1f N/m3) within 2%%"
                    % (label, gammaP), 'largest %.2e (depth > 0.1 H_s), rms %.2e of gamma\' H_s; '
                    'base %.1f Pa vs %.1f' % (local.max(), rms, -syy[depth > Hs - dx / 2].mean(),

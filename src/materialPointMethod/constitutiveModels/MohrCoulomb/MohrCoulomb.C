@@ -500,14 +500,12 @@ Foam::constitutiveModels::MohrCoulomb::update
         }
     }
 
-    // Exact elastic test on principal values from the closed form: a state
-    // inside the surface by a margin far above their error (1e-10 of the
-    // stress scale) is elastic; states on or near the surface take the
-    // accurate eigen decomposition below
+    // Principal values in closed form. A state inside the surface by a
+    // margin far above their error (1e-10 of the stress scale) is elastic.
+    const vector sApprox(principalValues(trial));
+    const scalar scale = mag(sApprox.x()) + mag(sApprox.z()) + sigmaC_;
     {
-        const vector sApprox(principalValues(trial));
-        const scalar margin =
-            1e-10*(mag(sApprox.x()) + mag(sApprox.z()) + sigmaC_);
+        const scalar margin = 1e-10*scale;
         if
         (
             yieldFunction(sApprox) <= -margin
@@ -517,6 +515,56 @@ Foam::constitutiveModels::MohrCoulomb::update
             stress = trial;
             return elastic;
         }
+    }
+
+    // Well separated principal values (both gaps above 1e-5 of the scale):
+    // the closed-form values serve the return, and the returned stress is
+    // rebuilt from the spectral projectors of the trial stress,
+    //     P_i = prod_{j != i} (A - s_j I)/(s_i - s_j),
+    //     sigma = A + D2 I + (D1 - D2) P1 + (D3 - D2) P3,  D_i = sC_i - sB_i
+    // (P2 = I - P1 - P3), without eigenvectors. The projectors' error is
+    // eps |A|/gap relative (below 1e-10 here), and D1 - D2, D3 - D2 never
+    // exceed the gaps of an order-keeping return. Close values (near the
+    // triaxial lines and the hydrostatic axis, where the projectors lose
+    // accuracy) take the iterative eigen decomposition below.
+    const scalar gapMin = 1e-5*scale;
+    if
+    (
+        sApprox.x() - sApprox.y() > gapMin
+     && sApprox.y() - sApprox.z() > gapMin
+    )
+    {
+        const vector& sB = sApprox;
+        vector sC;
+        const returnRegion region = principalReturn(sB, sC);
+        if (region == elastic)
+        {
+            stress = trial;
+            return region;
+        }
+        accumulatePlasticStrain(sB, sC, plasticStrain);
+        if (sC.x() == sC.y() && sC.y() == sC.z())
+        {
+            // Apex: exactly hydrostatic
+            stress = symmTensor(sC.x(), 0, 0, sC.x(), 0, sC.x());
+            return region;
+        }
+        const scalar d1 = sC.x() - sB.x();
+        const scalar d2 = sC.y() - sB.y();
+        const scalar d3 = sC.z() - sB.z();
+        const symmTensor A1(trial - sB.x()*symmTensor::I);
+        const symmTensor A2(trial - sB.y()*symmTensor::I);
+        const symmTensor A3(trial - sB.z()*symmTensor::I);
+        const symmTensor P1
+        (
+            symm(A2 & A3)/((sB.x() - sB.y())*(sB.x() - sB.z()))
+        );
+        const symmTensor P3
+        (
+            symm(A1 & A2)/((sB.z() - sB.x())*(sB.z() - sB.y()))
+        );
+        stress = trial + d2*symmTensor::I + (d1 - d2)*P1 + (d3 - d2)*P3;
+        return region;
     }
 
     // Principal stresses (ascending) and directions of the trial stress
@@ -563,13 +611,24 @@ Foam::constitutiveModels::MohrCoulomb::update
         stress = sC.x()*sqr(n1) + sC.y()*sqr(n2) + sC.z()*sqr(n3);
     }
 
+    accumulatePlasticStrain(sB, sC, plasticStrain);
+
+    return region;
+}
+
+
+void Foam::constitutiveModels::MohrCoulomb::accumulatePlasticStrain
+(
+    const vector& sB,
+    const vector& sC,
+    scalar& plasticStrain
+) const
+{
     // Equivalent deviatoric plastic strain of D^-1 (sB - sC): its
     // deviatoric part is dev(sB - sC)/(2G)
     const vector dS(sB - sC);
     const vector devDS(dS - ((dS.x() + dS.y() + dS.z())/3)*vector::one);
     plasticStrain += sqrt(2.0/3.0)*mag(devDS)/(2*G_);
-
-    return region;
 }
 
 
