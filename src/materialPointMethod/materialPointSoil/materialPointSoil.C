@@ -603,26 +603,48 @@ inline Foam::vector column(const Foam::tensor& T, const Foam::direction j)
 } // End anonymous namespace
 
 
+namespace
+{
+
+//- Four doubles as one SIMD value (GCC's vector extension: AVX where the
+//  machine has it, two SSE halves otherwise), loaded and stored unaligned
+typedef double v4d __attribute__((vector_size(32), aligned(8), may_alias));
+
+inline v4d v4(const double a, const double b, const double c, const double d)
+{
+    return v4d{a, b, c, d};
+}
+
+} // End anonymous namespace
+
+
 template<Foam::label S, Foam::label D, bool Apic, bool Forces>
 void Foam::materialPointSoil::p2gPoints(const vector& g)
 {
-    // Per node of point p, weight N, gradient (lattice units) gradN:
+    // Per node of point p, weight N = wx wy wz, gradient (lattice units)
+    // gradN = (w'x wy wz, wx w'y wz, wx wy w'z):
     //     mass     += N m
     //     momentum += N m (v + C r),  r = node - point  (APIC; else N m v)
     //     force    += N m g (+ N f_ext) - V sigma.gradN/dx
-    // with gradN = (w'x wy wz, wx w'y wz, wx wy w'z). The point's factors
-    // are formed once: mC dx, -V sigma/dx and their products with the
-    // x-direction weights, then each node costs a few multiply-adds.
+    // The point's factors are formed once per point (A_a, B_a for the S
+    // nodes a of a row) and per row (R), so that each node takes one
+    // contiguous update of its record (mass, momentum | force, 0):
+    //     rec += wx_a (wyz A_a + R) + wyz B_a
+    // A_a = (m, m v + C r_x(a) m dx | m g + f_ext, 0),
+    // R   = (0, wyz m C (r_y, r_z) dx | -V sigma.(w'y wz, wy w'z)/dx, 0),
+    // B_a = (0, 0 | -V sigma.e_x w'x_a/dx, 0).
     constexpr label SZ = (D == 3 ? S : 1);
+    constexpr label W = (Forces ? 8 : 4);
     const scalar dx = lattice_.dx();
     const scalar invDx = 1.0/dx;
     const label sy = lattice_.stride().y();
     const label sz = lattice_.stride().z();
     const vector* fExt = pointForce_.size() ? pointForce_.cdata() : nullptr;
+    const label nBox = gridMass_.size();
 
-    scalar* __restrict__ mass = gridMass_.data();
-    vector* __restrict__ momentum = gridMomentum_.data();
-    vector* __restrict__ force = gridForce_.data();
+    p2gScratch_.setSize(W*nBox);
+    p2gScratch_ = 0;
+    scalar* __restrict__ rec = p2gScratch_.data();
 
     const label nPoints = points_.size();
     for (label p = 0; p < nPoints; ++p)
@@ -633,8 +655,7 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
         const scalar* wx = sw.w[0];
         const scalar* dwx = sw.dw[0];
 
-        // Momentum of node a of a row, before the row's (y, z) part
-        vector momA[S];
+        v4d Alo[S], Ahi[S], Bhi[S];
         tensor mCdx(Zero);
         scalar ry[S], rz[SZ];
         if constexpr (Apic)
@@ -644,7 +665,8 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
             const vector cx(column(mCdx, 0));
             for (label a = 0; a < S; ++a)
             {
-                momA[a] = mv + cx*(sw.first.x() + a - xl.x());
+                const vector momA(mv + cx*(sw.first.x() + a - xl.x()));
+                Alo[a] = v4(mp, momA.x(), momA.y(), momA.z());
                 ry[a] = sw.first.y() + a - xl.y();
             }
             for (label c = 0; c < SZ; ++c)
@@ -656,22 +678,21 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
         {
             for (label a = 0; a < S; ++a)
             {
-                momA[a] = mv;
+                Alo[a] = v4(mp, mv.x(), mv.y(), mv.z());
             }
         }
 
-        vector mg(Zero), Bx(Zero), By(Zero), Bz(Zero);
-        vector forceA[S];
+        vector By(Zero), Bz(Zero);
         if constexpr (Forces)
         {
-            mg = fExt ? mp*g + fExt[p] : mp*g;
-            const symmTensor B(-(points_.V[p]*invDx)*points_.sigma[p]);
-            Bx = vector(B.xx(), B.xy(), B.xz());
-            By = vector(B.xy(), B.yy(), B.yz());
-            Bz = vector(B.xz(), B.yz(), B.zz());
+            const vector mg(fExt ? mp*g + fExt[p] : mp*g);
+            const symmTensor Bs(-(points_.V[p]*invDx)*points_.sigma[p]);
+            By = vector(Bs.xy(), Bs.yy(), Bs.yz());
+            Bz = vector(Bs.xz(), Bs.yz(), Bs.zz());
             for (label a = 0; a < S; ++a)
             {
-                forceA[a] = Bx*dwx[a];
+                Ahi[a] = v4(mg.x(), mg.y(), mg.z(), 0);
+                Bhi[a] = v4(Bs.xx(), Bs.xy(), Bs.xz(), 0)*dwx[a];
             }
         }
 
@@ -686,35 +707,55 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
                 const scalar wyz = wy*wz;
                 const label row = base + b*sy + c*sz;
 
-                vector momRow(Zero);
+                v4d Rlo = v4(0, 0, 0, 0);
                 if constexpr (Apic)
                 {
-                    momRow =
-                        column(mCdx, 1)*ry[b]
-                      + (D == 3 ? column(mCdx, 2)*rz[c] : vector::zero);
+                    const vector momRow
+                    (
+                        wyz
+                       *(
+                            column(mCdx, 1)*ry[b]
+                          + (D == 3 ? column(mCdx, 2)*rz[c] : vector::zero)
+                        )
+                    );
+                    Rlo = v4(0, momRow.x(), momRow.y(), momRow.z());
                 }
-                vector forceRow(Zero);
+                v4d Rhi = v4(0, 0, 0, 0);
                 if constexpr (Forces)
                 {
-                    forceRow = By*(sw.dw[1][b]*wz);
+                    vector forceRow(By*(sw.dw[1][b]*wz));
                     if constexpr (D == 3)
                     {
                         forceRow += Bz*(wy*dwz);
                     }
+                    Rhi = v4(forceRow.x(), forceRow.y(), forceRow.z(), 0);
                 }
 
+                scalar* __restrict__ r = rec + W*row;
                 for (label a = 0; a < S; ++a)
                 {
-                    const label n = row + a;
-                    const scalar N = wx[a]*wyz;
-                    mass[n] += N*mp;
-                    momentum[n] += N*(momA[a] + momRow);
+                    const scalar wxa = wx[a];
+                    v4d* lo = reinterpret_cast<v4d*>(r + W*a);
+                    *lo += wxa*(wyz*Alo[a] + Rlo);
                     if constexpr (Forces)
                     {
-                        force[n] += N*mg + wyz*forceA[a] + wx[a]*forceRow;
+                        v4d* hi = reinterpret_cast<v4d*>(r + W*a + 4);
+                        *hi += wxa*(wyz*Ahi[a] + Rhi) + wyz*Bhi[a];
                     }
                 }
             }
+        }
+    }
+
+    // To the grid arrays
+    for (label n = 0; n < nBox; ++n)
+    {
+        const scalar* rn = rec + W*n;
+        gridMass_[n] = rn[0];
+        gridMomentum_[n] = vector(rn[1], rn[2], rn[3]);
+        if constexpr (Forces)
+        {
+            gridForce_[n] = vector(rn[4], rn[5], rn[6]);
         }
     }
 }

@@ -740,6 +740,55 @@ static void testMohrCoulombSet(const mcSet& set)
             eRef, tol);
     }
 
+    // 7c. Just outside the surface with two principal values almost equal
+    //     (gap 1e-13 to 1e-5 of the scale, where the closed-form values
+    //     lose accuracy): never taken for elastic, returned onto the surface
+    {
+        Random rnd(37);
+        scalar eOut = 0;
+        label nElastic = 0;
+        const scalar k = (1 + std::sin(degToRad(set.phi)))
+            /(1 - std::sin(degToRad(set.phi)));
+        const scalar sigmaC = mc.sigmaC();
+        for (label t = 0; t < 2000; ++t)
+        {
+            const scalar gap = S*std::pow(10.0, -13 + 8*rnd.sample01<scalar>());
+            const scalar over = S*std::pow(10.0, -9 + 3*rnd.sample01<scalar>());
+            // s1 = s2 (+ gap) on the compression side, or s2 = s3 (- gap)
+            // on the extension side, with f = k s1 - s3 - sigma_c = over
+            const scalar s1 = -S*(0.2 + rnd.sample01<scalar>());
+            const scalar s3 = k*s1 - sigmaC - over;
+            const vector sp =
+                (t % 2)
+              ? vector(s1, s1 - gap, s3)
+              : vector(s1, s3 + gap, s3);
+            if (sp.y() > sp.x() || sp.z() > sp.y()
+             || (mc.tensionCutoff() < mc.apexStress()
+              && sp.x() > mc.tensionCutoff()))
+            {
+                continue;
+            }
+            const tensor R(randomRotation(rnd));
+            symmTensor s
+            (
+                transform(R, symmTensor(sp.x(), 0, 0, sp.y(), 0, sp.z()))
+            );
+            const symmTensor trial(s);
+            scalar ep = 0;
+            mc.updateStress(symmTensor::zero, s, ep);
+            if (ep == 0 && maxMag(s - trial) == 0)
+            {
+                ++nElastic;
+            }
+            eOut = max(eOut, mcSurfaceResidual(mc, principal(s))/S);
+        }
+        check(nElastic == 0 && eOut < 1e-12, tag + " 2000 trials just outside"
+            " the surface (f = 1e-9 to 1e-6 of the scale) with two principal"
+            " values 1e-13 to 1e-5 apart: none taken for elastic ("
+          + std::to_string(nElastic) + "), f after the return <= 1e-12",
+            eOut, 1e-12);
+    }
+
     // 8. Associated: closest point in the energy norm
     if (set.psi == set.phi)
     {

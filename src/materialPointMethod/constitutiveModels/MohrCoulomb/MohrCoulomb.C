@@ -39,9 +39,9 @@ namespace
 
 //- Principal values of a symmetric tensor, descending, in closed form
 //  (trigonometric solution of the characteristic cubic; Smith 1961,
-//  Commun. ACM 4, 168). Absolute error a few ulps of the deviator's size
-//  (unlike its eigenvectors, which lose accuracy near repeated values):
-//  good for deciding that a state lies clearly inside the yield surface.
+//  Commun. ACM 4, 168). Absolute error a few ulps of the deviator's size p
+//  where the values are well apart; near a repeated pair the arc cosine is
+//  ill-conditioned and the error grows to about eps p^2/gap.
 inline Foam::vector principalValues(const Foam::symmTensor& A)
 {
     using namespace Foam;
@@ -60,6 +60,89 @@ inline Foam::vector principalValues(const Foam::symmTensor& A)
     const scalar s1 = q + 2*p*std::cos(angle);
     const scalar s3 = q + 2*p*std::cos(angle + 2*constant::mathematical::pi/3);
     return vector(s1, 3*q - s1 - s3, s3);
+}
+
+
+//- Principal values (descending) and directions of a symmetric A whose
+//  closed-form values sApprox have one value well apart from the other two
+inline void spectralOneApart
+(
+    const Foam::symmTensor& A,
+    const Foam::vector& sApprox,
+    Foam::vector& sB,
+    Foam::vector& n1,
+    Foam::vector& n2,
+    Foam::vector& n3
+)
+{
+    using namespace Foam;
+
+    // The value apart: the smallest when the largest two are close. Its
+    // closed-form value is accurate (the closed form's error near a pair
+    // lies in the pair's split, not in the third value)
+    const bool lowApart =
+        (sApprox.x() - sApprox.y()) < (sApprox.y() - sApprox.z());
+    const scalar lambda = lowApart ? sApprox.z() : sApprox.x();
+
+    // Its direction: the largest cross product of two rows of A - lambda I
+    const vector r0(A.xx() - lambda, A.xy(), A.xz());
+    const vector r1(A.xy(), A.yy() - lambda, A.yz());
+    const vector r2(A.xz(), A.yz(), A.zz() - lambda);
+    const vector c01(r0 ^ r1), c02(r0 ^ r2), c12(r1 ^ r2);
+    const scalar m01 = magSqr(c01), m02 = magSqr(c02), m12 = magSqr(c12);
+    vector na =
+        (m01 >= m02 && m01 >= m12) ? c01 : (m02 >= m12 ? c02 : c12);
+    na /= mag(na);
+
+    // An orthonormal basis u, v of the plane normal to it
+    const vector absN(cmptMag(na));
+    const vector axis =
+        (absN.x() <= absN.y() && absN.x() <= absN.z())
+      ? vector(1, 0, 0)
+      : (absN.y() <= absN.z() ? vector(0, 1, 0) : vector(0, 0, 1));
+    vector u(na ^ axis);
+    u /= mag(u);
+    const vector v(na ^ u);
+
+    // The 2 x 2 problem [a b; b d] in that plane, one Jacobi rotation
+    const vector Au(A & u), Av(A & v);
+    const scalar a = u & Au;
+    const scalar b = u & Av;
+    const scalar d = v & Av;
+    scalar la = a, ld = d;
+    vector e1(u), e2(v);
+    if (b != 0)
+    {
+        const scalar tau = (d - a)/(2*b);
+        const scalar t =
+            (tau >= 0 ? 1 : -1)/(mag(tau) + std::sqrt(1 + tau*tau));
+        const scalar c = 1/std::sqrt(1 + t*t);
+        const scalar s = t*c;
+        la = a - t*b;
+        ld = d + t*b;
+        e1 = c*u - s*v;
+        e2 = s*u + c*v;
+    }
+    if (la < ld)
+    {
+        std::swap(la, ld);
+        std::swap(e1, e2);
+    }
+
+    if (lowApart)
+    {
+        sB = vector(la, ld, lambda);
+        n1 = e1;
+        n2 = e2;
+        n3 = na;
+    }
+    else
+    {
+        sB = vector(lambda, la, ld);
+        n1 = na;
+        n2 = e1;
+        n3 = e2;
+    }
 }
 
 } // End anonymous namespace
@@ -500,12 +583,19 @@ Foam::constitutiveModels::MohrCoulomb::update
         }
     }
 
-    // Principal values in closed form. A state inside the surface by a
-    // margin far above their error (1e-10 of the stress scale) is elastic.
+    // Principal values in closed form. Their error is a few ulps of the
+    // stress scale where they are well apart, and grows as eps scale^2/gap
+    // where two come close (the arc cosine of the closed form is
+    // ill-conditioned there; Kopp 2008, Int. J. Mod. Phys. C 19:523). A
+    // state inside the surface by a margin far above that error is
+    // elastic: 1e-10 of the scale, widened where the values are close.
     const vector sApprox(principalValues(trial));
     const scalar scale = mag(sApprox.x()) + mag(sApprox.z()) + sigmaC_;
+    const scalar gap =
+        min(sApprox.x() - sApprox.y(), sApprox.y() - sApprox.z());
     {
-        const scalar margin = 1e-10*scale;
+        const scalar margin =
+            1e-10*scale*(1 + 1e-5*scale/max(gap, 1e-30*scale + VSMALL));
         if
         (
             yieldFunction(sApprox) <= -margin
@@ -527,12 +617,7 @@ Foam::constitutiveModels::MohrCoulomb::update
     // exceed the gaps of an order-keeping return. Close values (near the
     // triaxial lines and the hydrostatic axis, where the projectors lose
     // accuracy) take the iterative eigen decomposition below.
-    const scalar gapMin = 1e-5*scale;
-    if
-    (
-        sApprox.x() - sApprox.y() > gapMin
-     && sApprox.y() - sApprox.z() > gapMin
-    )
+    if (gap > 1e-5*scale)
     {
         const vector& sB = sApprox;
         vector sC;
@@ -564,6 +649,37 @@ Foam::constitutiveModels::MohrCoulomb::update
             symm(A1 & A2)/((sB.z() - sB.x())*(sB.z() - sB.y()))
         );
         stress = trial + d2*symmTensor::I + (d1 - d2)*P1 + (d3 - d2)*P3;
+        return region;
+    }
+
+    // Two values close, the third apart from them by more than 1e-3 of the
+    // scale (near a triaxial line): the third's direction from the cross
+    // products of the rows of A - s I (error eps |A|/gap), the close pair
+    // and their directions from the 2 x 2 problem in the plane normal to
+    // it by one Jacobi rotation (exactly orthonormal, values to round-off,
+    // Golub & Van Loan 2013, section 8.5)
+    const scalar gapApart =
+        max(sApprox.x() - sApprox.y(), sApprox.y() - sApprox.z());
+    if (gapApart > 1e-3*scale)
+    {
+        vector sB, n1, n2, n3;
+        spectralOneApart(trial, sApprox, sB, n1, n2, n3);
+        vector sC;
+        const returnRegion region = principalReturn(sB, sC);
+        if (region == elastic)
+        {
+            stress = trial;
+            return region;
+        }
+        accumulatePlasticStrain(sB, sC, plasticStrain);
+        if (sC.x() == sC.y() && sC.y() == sC.z())
+        {
+            stress = symmTensor(sC.x(), 0, 0, sC.x(), 0, sC.x());
+        }
+        else
+        {
+            stress = sC.x()*sqr(n1) + sC.y()*sqr(n2) + sC.z()*sqr(n3);
+        }
         return region;
     }
 
