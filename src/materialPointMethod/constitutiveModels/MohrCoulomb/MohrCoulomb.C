@@ -57,8 +57,11 @@ inline Foam::vector principalValues(const Foam::symmTensor& A)
     const symmTensor B((A - q*symmTensor::I)/p);
     const scalar r = min(max(det(B)/2, scalar(-1)), scalar(1));
     const scalar angle = std::acos(r)/3;
-    const scalar s1 = q + 2*p*std::cos(angle);
-    const scalar s3 = q + 2*p*std::cos(angle + 2*constant::mathematical::pi/3);
+    // cos(angle + 2 pi/3) = -cos(angle)/2 - sqrt(3)/2 sin(angle): one sincos
+    const scalar c = std::cos(angle);
+    const scalar s = std::sin(angle);
+    const scalar s1 = q + 2*p*c;
+    const scalar s3 = q - p*(c + std::sqrt(3.0)*s);
     return vector(s1, 3*q - s1 - s3, s3);
 }
 

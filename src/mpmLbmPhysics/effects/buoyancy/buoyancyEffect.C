@@ -68,6 +68,35 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     streamed_.setSize(nBox, Zero);
     weight_.setSize(nBox, Zero);
 
+    // The lattice's gradient stencil at a node next to a wall or pressure
+    // patch sees the node's own value beyond it, so it gives half the
+    // gradient normal to the boundary there (the water's balance is built
+    // on that same stencil and needs it as it is). The soil's pore-pressure
+    // force takes the full gradient: per node and direction, the stencil's
+    // response to the coordinate field (1 inside, 1/2 at such nodes)
+    // divides it. Measured without: the soil's first row on a wall or an
+    // inlet felt half its buoyancy.
+    gradScale_.setSize(nBox, vector::one);
+    {
+        const scalar dx = lattice.dx();
+        const volVectorField& C = scene.mesh().C();
+        for (direction j = 0; j < 3; ++j)
+        {
+            scalarList x(nBox, 0.0);
+            forAll(lattice.cellNode(), celli)
+            {
+                x[lattice.cellNode()[celli]] = C[celli][j]/dx;
+            }
+            fluid_.streamedScalar(x, gradP_);
+            // Inside: sum_q w_q c_q x(n - c_q) = -c_s^2 e_j = -e_j/3
+            for (const label n : lattice.cellNode())
+            {
+                const scalar response = -3*gradP_[n][j];
+                gradScale_[n][j] = response > 0.25 ? 1/response : 1;
+            }
+        }
+    }
+
     // What the walls' reflection takes from the streamed image of a
     // uniform force: column j at node n is e_j - M(e_j) (zero away from
     // walls). Added back in balanced(), a locally uniform force is its own
@@ -212,7 +241,7 @@ void Foam::physicsEffects::buoyancy::evolve()
         const scalar phi = 1 - porosity_[n];
         if (phi > 0)
         {
-            soilForce_[n] = (toNewton*phi)*D;
+            soilForce_[n] = (toNewton*phi)*cmptMultiply(gradScale_[n], D);
             maxForce_ = max(maxForce_, mag(soilForce_[n]));
         }
     }
