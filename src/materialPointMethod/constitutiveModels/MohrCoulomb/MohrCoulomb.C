@@ -166,6 +166,7 @@ Foam::constitutiveModels::MohrCoulomb::MohrCoulomb
     k_(1),
     m_(1),
     sigmaC_(0),
+    gMax_(0),
     hasApex_(false),
     sigmaApex_(GREAT),
     sigmaT_(GREAT),
@@ -180,6 +181,7 @@ Foam::constitutiveModels::MohrCoulomb::MohrCoulomb
     k_ = 1 + 2*sinPhi/(1 - sinPhi);
     m_ = 1 + 2*sinPsi/(1 - sinPsi);
     sigmaC_ = 2*cohesion_*sqrt(k_);
+    gMax_ = sqrt(sqr(k_) + k_ + 1);
 
     hasApex_ = (phi_ > 0);
     sigmaApex_ = hasApex_ ? cohesion_*cos(phi_)/sinPhi : GREAT;
@@ -567,18 +569,30 @@ Foam::constitutiveModels::MohrCoulomb::update
 {
     const symmTensor trial(stress + elasticIncrement(dStrain));
 
-    // Cheap sufficient elastic test: the principal stresses lie within
-    // p -+ 2 sqrt(J2/3), so with k >= 1
-    //     f <= (k - 1) p + (k + 1) 2 sqrt(J2/3) - sigma_c
-    // Most points at rest pass it and skip the eigen decomposition
+    // Cheap sufficient elastic test on the invariants. With the Lode
+    // angle theta in [0, pi/3] (cos 3 theta of the sign of det(dev)),
+    //     s1 = p + R cos(theta),  s3 = p + R cos(theta + 2 pi/3),
+    //     R = 2 sqrt(J2/3),
+    //     f = (k - 1) p + R g(theta) - sigma_c,
+    //     g = (k + 1/2) cos(theta) + sqrt(3)/2 sin(theta)
+    //       <= sqrt(k^2 + k + 1)                         (its maximum)
+    //       <= sqrt(3)/2 (k + 1)  where det(dev) < 0      (theta >= pi/6,
+    // past the maximum, which lies below pi/6 for k >= 1), and
+    // s1 <= p + R (sqrt(3)/2 where det(dev) < 0). Bounds raised by 1e-12
+    // for round-off. Points at rest and most unloading points pass it and
+    // skip the principal values
     {
         const scalar p = tr(trial)/3;
         const symmTensor s(dev(trial));
-        const scalar r = 2*sqrt((s && s)/6);  // 2 sqrt(J2/3)
+        const scalar R = 2*sqrt((s && s)/6);
+        const bool pastPi6 = det(s) < 0;
+        const scalar gMax =
+            (1 + 1e-12)*(pastPi6 ? 0.5*sqrt(3.0)*(k_ + 1) : gMax_);
+        const scalar cosMax = (1 + 1e-12)*(pastPi6 ? 0.5*sqrt(3.0) : 1);
         if
         (
-            (k_ - 1)*p + (k_ + 1)*r - sigmaC_ <= 0
-         && (!tensionActive_ || p + r <= sigmaT_)
+            (k_ - 1)*p + gMax*R - sigmaC_ <= 0
+         && (!tensionActive_ || p + cosMax*R <= sigmaT_)
         )
         {
             stress = trial;
