@@ -624,33 +624,80 @@ Foam::constitutiveModels::MohrCoulomb::update
         }
     }
 
-    // Well separated principal values (both gaps above 1e-5 of the scale):
-    // the closed-form values serve the return, and the returned stress is
-    // rebuilt from the spectral projectors of the trial stress,
-    //     P_i = prod_{j != i} (A - s_j I)/(s_i - s_j),
-    //     sigma = A + D2 I + (D1 - D2) P1 + (D3 - D2) P3,  D_i = sC_i - sB_i
-    // (P2 = I - P1 - P3), without eigenvectors. The projectors' error is
-    // eps |A|/gap relative (below 1e-10 here), and D1 - D2, D3 - D2 never
-    // exceed the gaps of an order-keeping return. Close values (near the
-    // triaxial lines and the hydrostatic axis, where the projectors lose
-    // accuracy) take the iterative eigen decomposition below.
-    if (gap > 1e-5*scale)
+    // The principal values sB of the trial stress (descending), and how the
+    // returned stress is rebuilt with its principal directions:
+    // - well separated values (both gaps above 1e-5 of the scale): the
+    //   closed-form values, and the spectral projectors of the trial stress
+    //       P_i = prod_{j != i} (A - s_j I)/(s_i - s_j),
+    //       sigma = A + D2 I + (D1 - D2) P1 + (D3 - D2) P3,
+    //       D_i = sC_i - sB_i  (P2 = I - P1 - P3),
+    //   without eigenvectors. The projectors' error is eps |A|/gap
+    //   relative (below 1e-10 here), and D1 - D2, D3 - D2 never exceed the
+    //   gaps of an order-keeping return;
+    // - two values close, the third apart from them by more than 1e-3 of
+    //   the scale (near a triaxial line): the third's direction from the
+    //   cross products of the rows of A - s I (error eps |A|/gap), the
+    //   close pair and their directions from the 2 x 2 problem in the
+    //   plane normal to it by one Jacobi rotation (exactly orthonormal,
+    //   values to round-off; Golub & Van Loan 2013, section 8.5);
+    // - all three close (near the hydrostatic axis): Eigen's iterative
+    //   (QR) decomposition.
+    const bool projectors = (gap > 1e-5*scale);
+    vector sB(sApprox), n1(Zero), n2(Zero), n3(Zero);
+    if (!projectors)
     {
-        const vector& sB = sApprox;
-        vector sC;
-        const returnRegion region = principalReturn(sB, sC);
-        if (region == elastic)
+        const scalar gapApart =
+            max(sApprox.x() - sApprox.y(), sApprox.y() - sApprox.z());
+        if (gapApart > 1e-3*scale)
         {
-            stress = trial;
-            return region;
+            spectralOneApart(trial, sApprox, sB, n1, n2, n3);
         }
-        accumulatePlasticStrain(sB, sC, plasticStrain);
-        if (sC.x() == sC.y() && sC.y() == sC.z())
+        else
         {
-            // Apex: exactly hydrostatic
-            stress = symmTensor(sC.x(), 0, 0, sC.x(), 0, sC.x());
-            return region;
+            Eigen::Matrix3d A;
+            A <<
+                trial.xx(), trial.xy(), trial.xz(),
+                trial.xy(), trial.yy(), trial.yz(),
+                trial.xz(), trial.yz(), trial.zz();
+
+            const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A);
+
+            if (eig.info() != Eigen::Success)
+            {
+                FatalErrorInFunction
+                    << "No principal stresses of the trial stress " << trial
+                    << " (material " << name_ << ")" << abort(FatalError);
+            }
+
+            // (ascending)
+            const Eigen::Vector3d& ev = eig.eigenvalues();
+            const Eigen::Matrix3d& V = eig.eigenvectors();
+            sB = vector(ev(2), ev(1), ev(0));
+            n1 = vector(V(0, 2), V(1, 2), V(2, 2));
+            n2 = vector(V(0, 1), V(1, 1), V(2, 1));
+            n3 = vector(V(0, 0), V(1, 0), V(2, 0));
         }
+    }
+
+    vector sC;
+    const returnRegion region = principalReturn(sB, sC);
+
+    if (region == elastic)
+    {
+        stress = trial;
+        return region;
+    }
+
+    accumulatePlasticStrain(sB, sC, plasticStrain);
+
+    if (sC.x() == sC.y() && sC.y() == sC.z())
+    {
+        // Apex: hydrostatic whatever the directions (exactly zero at the
+        // origin)
+        stress = symmTensor(sC.x(), 0, 0, sC.x(), 0, sC.x());
+    }
+    else if (projectors)
+    {
         const scalar d1 = sC.x() - sB.x();
         const scalar d2 = sC.y() - sB.y();
         const scalar d3 = sC.z() - sB.z();
@@ -666,85 +713,12 @@ Foam::constitutiveModels::MohrCoulomb::update
             symm(A1 & A2)/((sB.z() - sB.x())*(sB.z() - sB.y()))
         );
         stress = trial + d2*symmTensor::I + (d1 - d2)*P1 + (d3 - d2)*P3;
-        return region;
-    }
-
-    // Two values close, the third apart from them by more than 1e-3 of the
-    // scale (near a triaxial line): the third's direction from the cross
-    // products of the rows of A - s I (error eps |A|/gap), the close pair
-    // and their directions from the 2 x 2 problem in the plane normal to
-    // it by one Jacobi rotation (exactly orthonormal, values to round-off,
-    // Golub & Van Loan 2013, section 8.5)
-    const scalar gapApart =
-        max(sApprox.x() - sApprox.y(), sApprox.y() - sApprox.z());
-    if (gapApart > 1e-3*scale)
-    {
-        vector sB, n1, n2, n3;
-        spectralOneApart(trial, sApprox, sB, n1, n2, n3);
-        vector sC;
-        const returnRegion region = principalReturn(sB, sC);
-        if (region == elastic)
-        {
-            stress = trial;
-            return region;
-        }
-        accumulatePlasticStrain(sB, sC, plasticStrain);
-        if (sC.x() == sC.y() && sC.y() == sC.z())
-        {
-            stress = symmTensor(sC.x(), 0, 0, sC.x(), 0, sC.x());
-        }
-        else
-        {
-            stress = sC.x()*sqr(n1) + sC.y()*sqr(n2) + sC.z()*sqr(n3);
-        }
-        return region;
-    }
-
-    // Principal stresses (ascending) and directions of the trial stress
-    Eigen::Matrix3d A;
-    A <<
-        trial.xx(), trial.xy(), trial.xz(),
-        trial.xy(), trial.yy(), trial.yz(),
-        trial.xz(), trial.yz(), trial.zz();
-
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A);
-
-    if (eig.info() != Eigen::Success)
-    {
-        FatalErrorInFunction
-            << "No principal stresses of the trial stress " << trial
-            << " (material " << name_ << ")" << abort(FatalError);
-    }
-
-    const Eigen::Vector3d& ev = eig.eigenvalues();
-    const vector sB(ev(2), ev(1), ev(0));
-
-    vector sC;
-    const returnRegion region = principalReturn(sB, sC);
-
-    if (region == elastic)
-    {
-        stress = trial;
-        return region;
-    }
-
-    if (sC.x() == sC.y() && sC.y() == sC.z())
-    {
-        // Apex: hydrostatic whatever the directions (exactly zero at the
-        // origin)
-        stress = symmTensor(sC.x(), 0, 0, sC.x(), 0, sC.x());
     }
     else
     {
         // Rotate back with the trial directions
-        const Eigen::Matrix3d& V = eig.eigenvectors();
-        const vector n1(V(0, 2), V(1, 2), V(2, 2));
-        const vector n2(V(0, 1), V(1, 1), V(2, 1));
-        const vector n3(V(0, 0), V(1, 0), V(2, 0));
         stress = sC.x()*sqr(n1) + sC.y()*sqr(n2) + sC.z()*sqr(n3);
     }
-
-    accumulatePlasticStrain(sB, sC, plasticStrain);
 
     return region;
 }
