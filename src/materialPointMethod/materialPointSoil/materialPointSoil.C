@@ -423,14 +423,6 @@ Foam::scalar Foam::materialPointSoil::stableDt() const
 }
 
 
-void Foam::materialPointSoil::clearGrid()
-{
-    gridMass_ = 0;
-    gridMomentum_ = Zero;
-    gridForce_ = Zero;
-}
-
-
 void Foam::materialPointSoil::checkPeriodicReach() const
 {
     // The soil's grid does not wrap around cyclic patches: a point whose
@@ -747,7 +739,8 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
         }
     }
 
-    // To the grid arrays
+    // To the grid arrays, all three set (the force zero without forces:
+    // USF adds it after the stress update)
     for (label n = 0; n < nBox; ++n)
     {
         const scalar* rn = rec + W*n;
@@ -756,6 +749,10 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
         if constexpr (Forces)
         {
             gridForce_[n] = vector(rn[4], rn[5], rn[6]);
+        }
+        else
+        {
+            gridForce_[n] = Zero;
         }
     }
 }
@@ -1159,7 +1156,6 @@ void Foam::materialPointSoil::subStep(const scalar dt)
     // transfer of the sub-step (once per point, not per transfer)
     computeWeights();
 
-    clearGrid();
     const bool usf = (update_ == updateType::USF);
     const bool parallel = Pstream::parRun();
     const haloExchange& halo = lattice_.halo();
@@ -1246,7 +1242,6 @@ void Foam::materialPointSoil::subStep(const scalar dt)
     {
         // The points have moved: new weights for the second mapping
         computeWeights();
-        clearGrid();
         p2gMassMomentum(false);
         foldGhosts(gridMomentum_, true);
         if (parallel)

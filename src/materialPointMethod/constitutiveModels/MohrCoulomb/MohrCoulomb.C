@@ -632,8 +632,9 @@ Foam::constitutiveModels::MohrCoulomb::update
     //       sigma = A + D2 I + (D1 - D2) P1 + (D3 - D2) P3,
     //       D_i = sC_i - sB_i  (P2 = I - P1 - P3),
     //   without eigenvectors. The projectors' error is eps |A|/gap
-    //   relative (below 1e-10 here), and D1 - D2, D3 - D2 never exceed the
-    //   gaps of an order-keeping return;
+    //   relative (below 1e-10 here), and D1 - D2, D3 - D2 stay within the
+    //   gaps of an order-keeping return (checked against the QR
+    //   reconstruction in Test-constitutiveModels);
     // - two values close, the third apart from them by more than 1e-3 of
     //   the scale (near a triaxial line): the third's direction from the
     //   cross products of the rows of A - s I (error eps |A|/gap), the
