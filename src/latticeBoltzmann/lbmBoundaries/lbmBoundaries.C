@@ -152,9 +152,16 @@ Foam::Pair<Foam::label> Foam::lbmBoundaries::wallFace
     const labelVector& c = vs_.c()[q];
 
     // The link leaves x along -c: a face of x on a wall side. A diagonal
-    // link at an edge or corner crosses two or three faces: walls take
-    // precedence (bounce-back, then slip) over pressure boundaries, so that
-    // no population enters through a wall next to an inlet
+    // link at an edge or corner crosses two or three faces. Bounce-back
+    // walls take precedence: the no-slip wall goes on past the pressure
+    // patch, so a population that would cross both comes from inside the
+    // wall. A slip wall next to a pressure patch is a mirror plane of the
+    // flow: the mirror image of the link crosses the pressure patch alone,
+    // and the population the extrapolation gives for the link itself is
+    // that image's (the mirror flow has the same density and normal
+    // velocity). Reflecting instead would close the corner to the flow:
+    // a narrow channel then loses pressure at its inlet and outlet in
+    // proportion to the flux.
     auto rank = [this](const label facei)
     {
         const label patchi = lattice_.mesh().boundaryMesh().whichPatch(facei);
@@ -162,7 +169,7 @@ Foam::Pair<Foam::label> Foam::lbmBoundaries::wallFace
         {
             case WALL:
             case MOVINGWALL: return 0;
-            case SLIP: return 1;
+            case PRESSURE: return 1;
             default: return 2;
         }
     };

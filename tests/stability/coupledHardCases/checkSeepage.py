@@ -18,15 +18,14 @@
 #     - MODE stay: the column stays put, no point moves by more than 1 mm
 #       at any written time (its elastic heave, i gamma_w H_s^2/(2 M), is
 #       micrometres);
-#       MODE lift (liftOpen: the same as an open item, check_open): the
-#       column is lifted, every point at least 2 mm higher at the end and
+#       MODE lift: the column is lifted, every point at least 2 mm higher at the end and
 #       the column moving up;
 #       MODE probe: prints whether it is lifted, no check (onset bracket);
-#     - EXTRA darcy (OPEN item): before any lift, the seepage flux through
+#     - EXTRA darcy: before any lift, the seepage flux through
 #       the column equals Darcy's q = (k/mu) i gamma_w of the applied
 #       gradient within 5% (k of Beetstra-van der Hoef at the measured
 #       Reynolds number, as tests/validation/darcySeepage);
-#       EXTRA plug (OPEN item): the lifted column rises as a rigid plug of
+#       EXTRA plug: the lifted column rises as a rigid plug of
 #       soil and water, the whole channel's water accelerated with it
 #       (incompressible water, quasi-steady Darcy drag):
 #         A = (i - i_c) gamma_w H_s / ((phi rho_s + n rho_w) H_s
@@ -85,7 +84,7 @@ elif mode == 'probe':
                              'lifted' if dy.min() >= 2e-3 and vy > 0 else 'not lifted'))
 else:
     lifted = dy.min() >= 2e-3 and vy > 0
-    (foamio.check if mode == 'lift' else foamio.check_open)(
+    ok &= foamio.check(
         lifted, '%s: the column is lifted (every point >= 2 mm higher at t = %g s, moving up)'
         % (label, T), 'lowest rise %.2e m, mean %.2e m, mean velocity %+.3e m/s'
         % (dy.min(), np.average(dy, weights=m), vy))
@@ -101,14 +100,14 @@ if extra == 'darcy':
           / (1 + 10 ** (3 * phi0) * Re ** (-(1 + 4 * phi0) / 2)))
     k = n0 * d * d / (18 * phi0 * F)
     qD = k / mu * i * gw
-    foamio.check_open(abs(q / qD - 1) <= 0.05, '%s: seepage flux = Darcy (k/mu) i gamma_w of '
+    ok &= foamio.check(abs(q / qD - 1) <= 0.05, '%s: seepage flux = Darcy (k/mu) i gamma_w of '
                       'the applied gradient within 5%%' % label,
                       'q %.4e m/s against %.4e (k %.3e m2, Re %.2g): %+.1f%%'
                       % (q, qD, k, Re, 100 * (q / qD - 1)))
 elif extra == 'plug':
     A = (i - ic) * gw * Hs / ((phi0 * rhoS + n0 * rhoW) * Hs + rhoW * (H - Hs))
     rise = np.average(dy, weights=m)
-    foamio.check_open(abs(rise / (0.5 * A * T * T) - 1) <= 0.25,
+    ok &= foamio.check(abs(rise / (0.5 * A * T * T) - 1) <= 0.25,
                       '%s: the column rises as a rigid plug (A t^2/2 within 25%%)' % label,
                       'mean rise %.4f m at t = %g s against %.4f m (A = %.3f m/s2), '
                       'mean velocity %.3f m/s against A t = %.3f m/s'
