@@ -13,6 +13,7 @@ License
 
 #include "latticeBoltzmannFluid.H"
 #include "lbmKernel.H"
+#include "vector2D.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -142,6 +143,19 @@ void Foam::latticeBoltzmannFluid::initialise()
             forAll(cellNode, celli)
             {
                 f[q*nBox + cellNode[celli]] = fq[celli];
+            }
+        }
+
+        // Porous flow: the porosity the populations were made with
+        IOobject porosityIO(popIO(0, IOobject::MUST_READ));
+        porosityIO.rename("lbmPorosity");
+        if (porosityIO.typeHeaderOk<volScalarField>(true))
+        {
+            const volScalarField eps(porosityIO, mesh_);
+            writtenPorosity_.setSize(nBox, 1.0);
+            forAll(cellNode, celli)
+            {
+                writtenPorosity_[cellNode[celli]] = eps[celli];
             }
         }
     }
@@ -310,6 +324,8 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     halo_(lattice.halo()),
     restarted_(false),
     porosityInitialised_(false),
+    displacedMass_(0),
+    displacement_(false),
     mass0_(0),
     nSteps_(0)
 {
@@ -470,16 +486,86 @@ void Foam::latticeBoltzmannFluid::enablePorosity()
 }
 
 
+void Foam::latticeBoltzmannFluid::enableDisplacement()
+{
+    displacement_ = true;
+    reservoirNodes_ = boundaries_->pressureNodes();
+}
+
+
 void Foam::latticeBoltzmannFluid::setPorosity(const scalarList& eps)
 {
     enablePorosity();
+    if (!porosityInitialised_ && writtenPorosity_.size())
+    {
+        // Restart: the populations hold the porosity written with them
+        for (const label n : lattice_.cellNode())
+        {
+            porosity_[n] = writtenPorosity_[n];
+        }
+        writtenPorosity_.clear();
+        porosityInitialised_ = true;
+    }
+
+    if (porosityInitialised_ && !displacement_)
+    {
+        for (const label n : lattice_.cellNode())
+        {
+            porosity_[n] = eps[n];
+        }
+        return;
+    }
+
+    if (porosityInitialised_)
+    {
+        // The displacement source. For a matrix at rest the Guo-Zhao
+        // lattice carries d(rho)/dt + div(rho u) = 0. The pore water's mass
+        // per mixture volume, n rho_f = rho - (1 - n), obeys
+        // d(n rho_f)/dt + div(rho_f u) = 0: where the porosity falls by
+        // delta (soil moving in), the lattice density must rise by delta
+        // for the water there to keep its mass, and the pressure this
+        // makes pushes the displaced water to the neighbours (mixture
+        // continuity, div(u + phi v_s) = 0). Added as an isotropic share
+        // w_q delta: no momentum. Without it the water ignores the soil's
+        // motion: a lifted column rises into water that does not move
+        // aside, and the column and the water above it part.
+        //
+        // At a node next to a pressure patch the displaced water goes to
+        // (or comes from) the reservoir beyond the patch, which holds the
+        // pressure: no source there. (As a source the patch would have to
+        // feed it through the node's own velocity, which the extrapolation
+        // copies: it would take a pressure deficit of about 3/2 of the
+        // source per step, and a column lifting off an inlet would stall
+        // on its own suction.)
+        const label Q = velocitySet_->Q();
+        const label nBox = lattice_.nBox();
+        const scalarList& w = velocitySet_->w();
+        scalarList& f = current();
+        for (const label n : reservoirNodes_)
+        {
+            porosity_[n] = eps[n];
+        }
+        scalar added = 0;
+        for (const label n : lattice_.cellNode())
+        {
+            const scalar source = porosity_[n] - eps[n];
+            porosity_[n] = eps[n];
+            if (source != 0)
+            {
+                for (label q = 0; q < Q; ++q)
+                {
+                    f[q*nBox + n] += w[q]*source;
+                }
+                added += source;
+            }
+        }
+        displacedMass_ += added;
+        return;
+    }
+
     for (const label n : lattice_.cellNode())
     {
         porosity_[n] = eps[n];
-    }
-    if (porosityInitialised_)
-    {
-        return;
     }
     porosityInitialised_ = true;
     if (restarted_ || nSteps_ > 0)
@@ -737,7 +823,10 @@ Foam::vector Foam::latticeBoltzmannFluid::momentum() const
 
 Foam::scalar Foam::latticeBoltzmannFluid::massDefect() const
 {
-    return returnReduce(stats_.mass, sumOp<scalar>())/mass0_ - 1.0;
+    // Against the initial mass plus what the displacement source added
+    Vector2D<scalar> m(stats_.mass, displacedMass_);
+    reduce(m, sumOp<Vector2D<scalar>>());
+    return m.x()/(mass0_ + m.y()) - 1.0;
 }
 
 
@@ -787,7 +876,7 @@ void Foam::latticeBoltzmannFluid::updateFields()
         const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
         U[celli] = units_.toPhysical((j - 0.5*F)/rho);
         p[celli] = units_.pressure(rho)/eps;
-        rhoPhys[celli] = rho*units_.rho0();
+        rhoPhys[celli] = (rho - (1 - eps))*units_.rho0();
     }
 
     U_.correctBoundaryConditions();
@@ -828,41 +917,59 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
 }
 
 
+void Foam::latticeBoltzmannFluid::writeNodeField
+(
+    const word& name,
+    const scalar* nodeValues
+) const
+{
+    // Binary, at full precision whatever the case's writeFormat: a restart
+    // reads back exactly what the run held
+    volScalarField fld
+    (
+        IOobject
+        (
+            name,
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimensionedScalar(dimless, Zero)
+    );
+    const labelList& cellNode = lattice_.cellNode();
+    scalarField& values = fld.primitiveFieldRef();
+    forAll(cellNode, celli)
+    {
+        values[celli] = nodeValues[cellNode[celli]];
+    }
+    fld.writeObject
+    (
+        IOstream::BINARY,
+        IOstream::currentVersion,
+        mesh_.time().writeCompression(),
+        true
+    );
+}
+
+
 void Foam::latticeBoltzmannFluid::writePopulations() const
 {
     const label Q = velocitySet_->Q();
     const label nBox = lattice_.nBox();
-    const labelList& cellNode = lattice_.cellNode();
     const scalarList& f = current();
-
     for (label q = 0; q < Q; ++q)
     {
-        volScalarField fq
-        (
-            IOobject
-            (
-                "lbmF" + Foam::name(q),
-                mesh_.time().timeName(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh_,
-            dimensionedScalar(dimless, Zero)
-        );
-        scalarField& fi = fq.primitiveFieldRef();
-        forAll(cellNode, celli)
-        {
-            fi[celli] = f[q*nBox + cellNode[celli]];
-        }
-        fq.writeObject
-        (
-            IOstream::BINARY,
-            IOstream::currentVersion,
-            mesh_.time().writeCompression(),
-            true
-        );
+        writeNodeField("lbmF" + Foam::name(q), f.cdata() + q*nBox);
+    }
+
+    if (displacement_)
+    {
+        // The porosity the populations hold (a restart continues the
+        // displacement source from it)
+        writeNodeField("lbmPorosity", porosity_.cdata());
     }
 }
 

@@ -465,6 +465,23 @@ void Foam::lbmBoundaries::fillHomogeneous(scalar* f) const
 }
 
 
+Foam::labelList Foam::lbmBoundaries::pressureNodes() const
+{
+    labelList nodes(abbNode_);
+    Foam::sort(nodes);
+    label nUnique = 0;
+    forAll(nodes, i)
+    {
+        if (i == 0 || nodes[i] != nodes[nUnique - 1])
+        {
+            nodes[nUnique++] = nodes[i];
+        }
+    }
+    nodes.setSize(nUnique);
+    return nodes;
+}
+
+
 void Foam::lbmBoundaries::report(Ostream& os) const
 {
     const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();

@@ -30,7 +30,9 @@
 #       (incompressible water, quasi-steady Darcy drag):
 #         A = (i - i_c) gamma_w H_s / ((phi rho_s + n rho_w) H_s
 #                                       + rho_w (H - H_s)),
-#       mean displacement A t^2/2 at the end within 25%.
+#       mean displacement A t^2/2 at the end within 5% (the water above
+#       moves aside only through the displacement source of the porous
+#       flow: without it the column rose at twice the water's pace).
 #------------------------------------------------------------------------------
 import os
 import sys
@@ -107,8 +109,8 @@ if extra == 'darcy':
 elif extra == 'plug':
     A = (i - ic) * gw * Hs / ((phi0 * rhoS + n0 * rhoW) * Hs + rhoW * (H - Hs))
     rise = np.average(dy, weights=m)
-    ok &= foamio.check(abs(rise / (0.5 * A * T * T) - 1) <= 0.25,
-                      '%s: the column rises as a rigid plug (A t^2/2 within 25%%)' % label,
+    ok &= foamio.check(abs(rise / (0.5 * A * T * T) - 1) <= 0.05,
+                      '%s: the column rises as a rigid plug (A t^2/2 within 5%%)' % label,
                       'mean rise %.4f m at t = %g s against %.4f m (A = %.3f m/s2), '
                       'mean velocity %.3f m/s against A t = %.3f m/s'
                       % (rise, T, 0.5 * A * T * T, A, vy, A * T))

@@ -38,6 +38,9 @@ sys.path.insert(0, os.path.join(os.environ['MPMLBM_PROJECT_DIR'], 'tests', 'lib'
 import foamio
 
 case, label = sys.argv[1], sys.argv[2]
+# A third argument 'open': the checks of a run the code does not hold yet,
+# reported as OPEN lines with their numbers (foamio.check_open)
+check = foamio.check_open if len(sys.argv) > 3 and sys.argv[3] == 'open' else foamio.check
 H, Hs, n0, rhoS, rhoW, g, nu = 2.0, 1.0, 0.4, 2650.0, 1000.0, 9.81, 0.3
 phi = 1 - n0
 gammaP = phi * (rhoS - rhoW) * g
@@ -52,14 +55,14 @@ y = C[:, 1]
 dx = foamio.Lattice(C).dx
 
 defect = [abs(float(v)) for v in re.findall(r'mass defect ([-0-9.e+]+)', log)]
-ok = foamio.check('End' in log and len(defect) > 0 and max(defect) <= 1e-10,
+ok = check('End' in log and len(defect) > 0 and max(defect) <= 1e-10,
                   '%s: stable, water mass conserved' % label,
                   'largest mass defect %.1e' % (max(defect) if defect else float('nan')))
 
 speed = np.sqrt((U ** 2).sum(axis=1))
 limit = 1e-3 * np.sqrt(g * H)
 surface = np.abs(y - Hs) <= 3 * dx
-ok &= foamio.check(speed[surface].max() <= limit and speed.max() <= limit,
+ok &= check(speed[surface].max() <= limit and speed.max() <= limit,
                    '%s: water at rest at the soil surface and everywhere (<= %.3g m/s)'
                    % (label, limit), 'largest %.2e m/s at the surface, %.2e anywhere'
                    % (speed[surface].max(), speed.max()))
@@ -70,7 +73,7 @@ exact = rhoW * g * (y[top].mean() - y)
 err = np.abs(p - ptop - exact).max() / (rhoW * g * H)
 inSoil = y < Hs
 errSoil = np.abs(p - ptop - exact)[inSoil].max() / (rhoW * g * H)
-ok &= foamio.check(err <= 0.01, '%s: pore pressure hydrostatic in water and soil within 1%%'
+ok &= check(err <= 0.01, '%s: pore pressure hydrostatic in water and soil within 1%%'
                    % label, 'largest deviation %.2e of rho_w g H (in the soil %.2e), p(bottom) - '
                    'p(top) %.1f Pa vs %.1f' % (err, errSoil, p[y < dx].mean() - ptop,
                                                 rhoW * g * (y.max() - y.min())))
@@ -82,12 +85,12 @@ syy, sxx = s[:, 3], s[:, 0]
 deep = depth > 0.1 * Hs
 local = np.abs(syy[deep] + gammaP * depth[deep]) / (gammaP * depth[deep])
 rms = np.sqrt(np.mean((syy + gammaP * depth) ** 2)) / (gammaP * Hs)
-ok &= foamio.check(local.max() <= 0.02 and rms <= 0.02,
+ok &= check(local.max() <= 0.02 and rms <= 0.02,
                    "%s: effective stress sigma'_yy = gamma' depth (gamma' = %.1f N/m3) within 2%%"
                    % (label, gammaP), 'largest %.2e (depth > 0.1 H_s), rms %.2e of gamma\' H_s; '
                    'base %.1f Pa vs %.1f' % (local.max(), rms, -syy[depth > Hs - dx / 2].mean(),
                                              gammaP * (Hs - dx / 4)))
 ratio = np.sum(sxx[deep] * syy[deep]) / np.sum(syy[deep] ** 2)
-ok &= foamio.check(abs(ratio / K0 - 1) <= 0.02, "%s: lateral stress sigma'_xx = K0 sigma'_yy within 2%%"
+ok &= check(abs(ratio / K0 - 1) <= 0.02, "%s: lateral stress sigma'_xx = K0 sigma'_yy within 2%%"
                    % label, 'ratio %.5f vs %.5f' % (ratio, K0))
 sys.exit(0 if ok else 1)

@@ -117,6 +117,25 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
         // The drag maps the soil's porosity onto the lattice each step
         fluid_.enablePorosity();
         Info<< ": porosity 1 - phi of the soil, resistance of the drag";
+        const bool displacement =
+            dict_.getOrDefault<Switch>("displacement", false);
+        if (displacement)
+        {
+            fluid_.enableDisplacement();
+            Info<< "; displacement on (moving soil pushes its volume of"
+                << " water aside)";
+        }
+        else
+        {
+            Info<< "; displacement off (moving soil does not push water"
+                << " aside: mixture continuity is not enforced)";
+        }
+    }
+    if (medium_ == mediumType::fixed && dict_.found("displacement"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "displacement applies to medium soil only (a fixed matrix"
+            << " does not move): remove the keyword" << exit(FatalIOError);
     }
     Info<< nl << endl;
 }
