@@ -493,17 +493,17 @@ void Foam::latticeBoltzmannFluid::enableDisplacement()
 }
 
 
-void Foam::latticeBoltzmannFluid::setPorosity(const scalarList& eps)
+void Foam::latticeBoltzmannFluid::setPorosity
+(
+    const scalarList& eps,
+    const scalarList* predictedFall
+)
 {
     enablePorosity();
     if (!porosityInitialised_ && writtenPorosity_.size())
     {
         // Restart: the populations hold the porosity written with them
-        for (const label n : lattice_.cellNode())
-        {
-            porosity_[n] = writtenPorosity_[n];
-        }
-        writtenPorosity_.clear();
+        heldPorosity_.transfer(writtenPorosity_);
         porosityInitialised_ = true;
     }
 
@@ -541,14 +541,33 @@ void Foam::latticeBoltzmannFluid::setPorosity(const scalarList& eps)
         const label nBox = lattice_.nBox();
         const scalarList& w = velocitySet_->w();
         scalarList& f = current();
+        if (heldPorosity_.empty())
+        {
+            heldPorosity_ = porosity_;
+        }
+        //
+        // The soil's coming step is given to the water ahead of it: the
+        // populations hold the water of the porosity less the predicted
+        // fall, and each call adds the difference between the actual fall
+        // and the predicted one (the mass stays exact). The soil then
+        // takes, while it moves, the pressure of its own motion; given a
+        // step late, the pressure pushed back on motion already made, and
+        // on a submerged bed of coarse sand (weak drag) a standing wave
+        // grew from round-off (tests/validation/submergedBed)
+        auto held = [&](const label n)
+        {
+            return eps[n] - (predictedFall ? (*predictedFall)[n] : 0);
+        };
         for (const label n : reservoirNodes_)
         {
-            porosity_[n] = eps[n];
+            heldPorosity_[n] = held(n);
         }
         scalar added = 0;
         for (const label n : lattice_.cellNode())
         {
-            const scalar source = porosity_[n] - eps[n];
+            const scalar heldNew = held(n);
+            const scalar source = heldPorosity_[n] - heldNew;
+            heldPorosity_[n] = heldNew;
             porosity_[n] = eps[n];
             if (source != 0)
             {
@@ -969,7 +988,11 @@ void Foam::latticeBoltzmannFluid::writePopulations() const
     {
         // The porosity the populations hold (a restart continues the
         // displacement source from it)
-        writeNodeField("lbmPorosity", porosity_.cdata());
+        writeNodeField
+        (
+            "lbmPorosity",
+            (heldPorosity_.size() ? heldPorosity_ : porosity_).cdata()
+        );
     }
 }
 

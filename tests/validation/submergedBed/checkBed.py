@@ -38,9 +38,7 @@ sys.path.insert(0, os.path.join(os.environ['MPMLBM_PROJECT_DIR'], 'tests', 'lib'
 import foamio
 
 case, label = sys.argv[1], sys.argv[2]
-# A third argument 'open': the checks of a run the code does not hold yet,
-# reported as OPEN lines with their numbers (foamio.check_open)
-check = foamio.check_open if len(sys.argv) > 3 and sys.argv[3] == 'open' else foamio.check
+check = foamio.check
 H, Hs, n0, rhoS, rhoW, g, nu = 2.0, 1.0, 0.4, 2650.0, 1000.0, 9.81, 0.3
 phi = 1 - n0
 gammaP = phi * (rhoS - rhoW) * g

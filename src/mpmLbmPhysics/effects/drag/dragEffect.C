@@ -176,7 +176,41 @@ void Foam::physicsEffects::drag::evolve()
         {
             eps[n] = 1 - phi_[n];
         }
-        fluid_.setPorosity(eps);
+        if (fluid_.displacement())
+        {
+            // The fall of the porosity the soil's coming step will make,
+            // -dt div(phi v_s) (central differences; no flux through a
+            // wall), given to the water ahead of it
+            const latticeMesh& lattice = fluid_.lattice();
+            const List<unsigned char>& kind = lattice.kind();
+            const labelVector& stride = lattice.stride();
+            const scalar c = dt/(2*lattice.dx());
+            predictedFall_.setSize(phi_.size());
+            predictedFall_ = 0;
+            for (const label n : lattice.cellNode())
+            {
+                scalar div = 0;
+                for (direction a = 0; a < lattice.nDim(); ++a)
+                {
+                    const scalar own = phi_[n]*soilVelocity_[n][a];
+                    const label up = n + stride[a];
+                    const label down = n - stride[a];
+                    const scalar fUp =
+                        kind[up] == latticeMesh::WALL
+                      ? -own : phi_[up]*soilVelocity_[up][a];
+                    const scalar fDown =
+                        kind[down] == latticeMesh::WALL
+                      ? -own : phi_[down]*soilVelocity_[down][a];
+                    div += fUp - fDown;
+                }
+                predictedFall_[n] = -c*div;
+            }
+            fluid_.setPorosity(eps, &predictedFall_);
+        }
+        else
+        {
+            fluid_.setPorosity(eps);
+        }
     }
 
     maxForce_ = 0;
