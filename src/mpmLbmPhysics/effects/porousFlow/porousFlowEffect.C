@@ -14,6 +14,8 @@ License
 #include "porousFlowEffect.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
+#include "soilEffect.H"
+#include "materialPointSoil.H"
 #include "addToRunTimeSelectionTable.H"
 #include <cstdio>
 
@@ -124,24 +126,46 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
         {
             fluid_.enableDisplacement();
             // What it costs in accuracy: the pore water is the lattice's,
-            // with the bulk modulus rho c_s^2 of its artificial sound speed
-            // (the soil's consolidation coefficient k/(mu (n/K_f + 1/M))
-            // takes it)
+            // with the bulk modulus K_f = rho c_s^2 of its artificial sound
+            // speed, and a soil's consolidation coefficient
+            // c_v = k/(mu (n/K_f + 1/M)) (Biot, incompressible grains)
+            // takes it: slower than with water by
+            // (n/K_f + 1/M)/(n/K_w + 1/M) for each material's M
             const lbmUnits& units = fluid_.units();
             const scalar Kf = units.rho0()*sqr(units.soundSpeed());
             const scalar Kwater = 2.2e9;
-            char figures[64];
+            Info<< "; displacement on (moving soil pushes its volume of"
+                << " water aside)" << nl;
+            char figures[160];
             std::snprintf
             (
-                figures, sizeof(figures), "%.3g Pa, %.3g", Kf, Kwater/Kf
+                figures, sizeof(figures),
+                "    the pore water's bulk modulus is the lattice's,"
+                " rho c_s^2 = %.3g Pa, %.3g times below water's (2.2e9 Pa)",
+                Kf, Kwater/Kf
             );
-            Info<< "; displacement on (moving soil pushes its volume of"
-                << " water aside)" << nl
-                << "    the pore water's bulk modulus is the lattice's,"
-                << " rho c_s^2 = " << figures
-                << " times below water's (2.2e9 Pa): the pore pressure the"
-                << " soil's motion makes dissipates up to that much slower"
-                << " than in the real soil (a shorter time step raises it)";
+            Info<< figures << nl;
+            if (scene.has("soil"))
+            {
+                const materialPointSoil& mpm =
+                    scene.effect<physicsEffects::soil>("soil").mpm();
+                const scalar n = max(mpm.minPorosity(), SMALL);
+                std::snprintf(figures, sizeof(figures), "%.3g", n);
+                Info<< "    a soil's consolidation (c_v = k/(mu (n/K_f"
+                    << " + 1/M))) runs slower than with water by, at n = "
+                    << figures << ":";
+                for (const constitutiveModel& mat : mpm.materials())
+                {
+                    const scalar M = mat.M();
+                    std::snprintf
+                    (
+                        figures, sizeof(figures), " %.3g",
+                        (n/Kf + 1/M)/(n/Kwater + 1/M)
+                    );
+                    Info<< " " << mat.name() << figures;
+                }
+                Info<< " (a shorter time step raises K_f as 1/dt^2)";
+            }
         }
         else
         {
