@@ -493,6 +493,73 @@ void Foam::latticeBoltzmannFluid::enableDisplacement()
 }
 
 
+void Foam::latticeBoltzmannFluid::addDisplacementSource
+(
+    const scalarList& eps,
+    const scalarList* predictedFall
+)
+{
+    // For a matrix at rest the Guo-Zhao lattice carries
+    // d(rho)/dt + div(rho u) = 0. The pore water's mass per mixture volume,
+    // n rho_f = rho - (1 - n), obeys d(n rho_f)/dt + div(rho_f u) = 0:
+    // where the porosity falls by delta (soil moving in), the lattice
+    // density must rise by delta for the water there to keep its mass, and
+    // the pressure this makes pushes the displaced water to the neighbours
+    // (mixture continuity, div(u + phi v_s) = 0). Added as an isotropic
+    // share w_q delta: no momentum. Without it the water ignores the
+    // soil's motion: a lifted column rises into water that does not move
+    // aside, and the column and the water above it part.
+    //
+    // The soil's coming step is given to the water ahead of it: the
+    // populations hold the water of the porosity less the predicted fall,
+    // and each call adds the difference between the actual fall and the
+    // predicted one (the mass stays exact). The soil then takes, while it
+    // moves, the pressure of its own motion; given a step late, the
+    // pressure pushed back on motion already made, and on a submerged bed
+    // of coarse sand (weak drag) a standing wave grew from round-off
+    // (tests/validation/submergedBed).
+    //
+    // At a node next to a pressure patch the displaced water goes to (or
+    // comes from) the reservoir beyond the patch, which holds the
+    // pressure: no source there. (As a source the patch would have to feed
+    // it through the node's own velocity, which the extrapolation copies:
+    // it would take a pressure deficit of about 3/2 of the source per step,
+    // and a column lifting off an inlet would stall on its own suction.)
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const scalarList& w = velocitySet_->w();
+    scalarList& f = current();
+    if (heldPorosity_.empty())
+    {
+        heldPorosity_ = porosity_;
+    }
+    auto held = [&](const label n)
+    {
+        return eps[n] - (predictedFall ? (*predictedFall)[n] : 0);
+    };
+    for (const label n : reservoirNodes_)
+    {
+        heldPorosity_[n] = held(n);
+    }
+    scalar added = 0;
+    for (const label n : lattice_.cellNode())
+    {
+        const scalar heldNew = held(n);
+        const scalar source = heldPorosity_[n] - heldNew;
+        heldPorosity_[n] = heldNew;
+        if (source != 0)
+        {
+            for (label q = 0; q < Q; ++q)
+            {
+                f[q*nBox + n] += w[q]*source;
+            }
+            added += source;
+        }
+    }
+    displacedMass_ += added;
+}
+
+
 void Foam::latticeBoltzmannFluid::setPorosity
 (
     const scalarList& eps,
@@ -507,85 +574,19 @@ void Foam::latticeBoltzmannFluid::setPorosity
         porosityInitialised_ = true;
     }
 
-    if (porosityInitialised_ && !displacement_)
+    if (porosityInitialised_ && displacement_)
     {
-        for (const label n : lattice_.cellNode())
-        {
-            porosity_[n] = eps[n];
-        }
-        return;
+        addDisplacementSource(eps, predictedFall);
     }
-
-    if (porosityInitialised_)
-    {
-        // The displacement source. For a matrix at rest the Guo-Zhao
-        // lattice carries d(rho)/dt + div(rho u) = 0. The pore water's mass
-        // per mixture volume, n rho_f = rho - (1 - n), obeys
-        // d(n rho_f)/dt + div(rho_f u) = 0: where the porosity falls by
-        // delta (soil moving in), the lattice density must rise by delta
-        // for the water there to keep its mass, and the pressure this
-        // makes pushes the displaced water to the neighbours (mixture
-        // continuity, div(u + phi v_s) = 0). Added as an isotropic share
-        // w_q delta: no momentum. Without it the water ignores the soil's
-        // motion: a lifted column rises into water that does not move
-        // aside, and the column and the water above it part.
-        //
-        // At a node next to a pressure patch the displaced water goes to
-        // (or comes from) the reservoir beyond the patch, which holds the
-        // pressure: no source there. (As a source the patch would have to
-        // feed it through the node's own velocity, which the extrapolation
-        // copies: it would take a pressure deficit of about 3/2 of the
-        // source per step, and a column lifting off an inlet would stall
-        // on its own suction.)
-        const label Q = velocitySet_->Q();
-        const label nBox = lattice_.nBox();
-        const scalarList& w = velocitySet_->w();
-        scalarList& f = current();
-        if (heldPorosity_.empty())
-        {
-            heldPorosity_ = porosity_;
-        }
-        //
-        // The soil's coming step is given to the water ahead of it: the
-        // populations hold the water of the porosity less the predicted
-        // fall, and each call adds the difference between the actual fall
-        // and the predicted one (the mass stays exact). The soil then
-        // takes, while it moves, the pressure of its own motion; given a
-        // step late, the pressure pushed back on motion already made, and
-        // on a submerged bed of coarse sand (weak drag) a standing wave
-        // grew from round-off (tests/validation/submergedBed)
-        auto held = [&](const label n)
-        {
-            return eps[n] - (predictedFall ? (*predictedFall)[n] : 0);
-        };
-        for (const label n : reservoirNodes_)
-        {
-            heldPorosity_[n] = held(n);
-        }
-        scalar added = 0;
-        for (const label n : lattice_.cellNode())
-        {
-            const scalar heldNew = held(n);
-            const scalar source = heldPorosity_[n] - heldNew;
-            heldPorosity_[n] = heldNew;
-            porosity_[n] = eps[n];
-            if (source != 0)
-            {
-                for (label q = 0; q < Q; ++q)
-                {
-                    f[q*nBox + n] += w[q]*source;
-                }
-                added += source;
-            }
-        }
-        displacedMass_ += added;
-        return;
-    }
-
     for (const label n : lattice_.cellNode())
     {
         porosity_[n] = eps[n];
     }
+    if (porosityInitialised_)
+    {
+        return;
+    }
+
     porosityInitialised_ = true;
     if (restarted_ || nSteps_ > 0)
     {
