@@ -826,6 +826,10 @@ void Foam::materialPointSoil::g2pPoints(const scalar dt)
     const vector* velOld = gridVelocityOld_.cdata();
 
     const label nPoints = points_.size();
+    if (stressHere)
+    {
+        strainIncrement_.setSize(nPoints);
+    }
     for (label p = 0; p < nPoints; ++p)
     {
         const shapeWeights& sw = weights_[p];
@@ -867,6 +871,11 @@ void Foam::materialPointSoil::g2pPoints(const scalar dt)
             ++nClamped_;
         }
     }
+
+    if (stressHere)
+    {
+        updateConstitutive();
+    }
 }
 
 
@@ -882,6 +891,7 @@ void Foam::materialPointSoil::stressPoints
     const label sz = lattice_.stride().z();
 
     const label nPoints = points_.size();
+    strainIncrement_.setSize(nPoints);
     for (label p = 0; p < nPoints; ++p)
     {
         const shapeWeights& sw = weights_[p];
@@ -900,6 +910,7 @@ void Foam::materialPointSoil::stressPoints
         );
         updatePointStress(p, L, dt);
     }
+    updateConstitutive();
 }
 
 
@@ -910,16 +921,54 @@ inline void Foam::materialPointSoil::updatePointStress
     const scalar dt
 )
 {
-    // Jaumann rotation, then the constitutive update
-    const tensor W(skew(L));
+    // Jaumann rotation now, the constitutive update after the point loop
+    // (updateConstitutive: it needs nothing else of this point's update).
+    // With the spin W = skew(L) = [0 a b; -a 0 c; -b -c 0] and M = W s,
+    // W s - s W = M + M^T (s symmetric, W skew): six components from the
+    // three of W
     symmTensor& s = points_.sigma[p];
-    s += dt*symm((W & s) - (s & W));
-    materials_[points_.material[p]].updateStress
-    (
-        symm(L)*dt, s, points_.plasticStrain[p]
-    );
+    {
+        const scalar a = 0.5*(L.xy() - L.yx());
+        const scalar b = 0.5*(L.xz() - L.zx());
+        const scalar c = 0.5*(L.yz() - L.zy());
+        s += dt*symmTensor
+        (
+            2*(a*s.xy() + b*s.xz()),
+            (a*s.yy() + b*s.yz()) + (c*s.xz() - a*s.xx()),
+            (a*s.yz() + b*s.zz()) - (b*s.xx() + c*s.xy()),
+            2*(c*s.yz() - a*s.xy()),
+            (c*s.zz() - a*s.xz()) - (b*s.xy() + c*s.yy()),
+            -2*(b*s.xz() + c*s.yz())
+        );
+    }
+    strainIncrement_[p] = symm(L)*dt;
     points_.F[p] = (tensor::I + dt*L) & points_.F[p];
     updateVolume(p);
+}
+
+
+void Foam::materialPointSoil::updateConstitutive()
+{
+    const label nPoints = points_.size();
+    const label* material = points_.material.cdata();
+    label start = 0;
+    while (start < nPoints)
+    {
+        const label m = material[start];
+        label end = start + 1;
+        while (end < nPoints && material[end] == m)
+        {
+            ++end;
+        }
+        materials_[m].updateStresses
+        (
+            end - start,
+            strainIncrement_.cdata() + start,
+            points_.sigma.data() + start,
+            points_.plasticStrain.data() + start
+        );
+        start = end;
+    }
 }
 
 
@@ -1469,7 +1518,10 @@ Foam::scalar Foam::materialPointSoil::memoryBytes() const
     return returnReduce
     (
         scalar(points_.size())
-       *(materialPoints::memoryPerPoint() + sizeof(shapeWeights))
+       *(
+            materialPoints::memoryPerPoint() + sizeof(shapeWeights)
+          + sizeof(symmTensor)
+        )
       + scalar(lattice_.nBox())*(sizeof(scalar) + 4*sizeof(vector)),
         sumOp<scalar>()
     );
