@@ -527,10 +527,20 @@ inline void withSupport(const Foam::label S, const Foam::label D, Kernel&& k)
         << D << "D (2, 3 or 4 nodes are built)" << Foam::abort(Foam::FatalError);
 }
 
+//- Four doubles as one SIMD value (GCC's vector extension: AVX where the
+//  machine has it, two SSE halves otherwise), loaded and stored unaligned
+typedef double v4d __attribute__((vector_size(32), aligned(8), may_alias));
+
+inline v4d v4(const double a, const double b, const double c, const double d)
+{
+    return v4d{a, b, c, d};
+}
+
 //- The sums of one point over its support nodes: vPic = sum N v_n,
 //  Lx, Ly, Lz = the columns of sum v_n gradN (lattice units) and, for FLIP,
 //  dv = sum N (v_n - v_n,old). Along a row of nodes the sums of w_x v_n
-//  and w'_x v_n serve every term: six multiply-adds per node
+//  and w'_x v_n serve every term: six multiply-adds per node, each one
+//  SIMD operation on a node velocity padded to four doubles (vel4)
 template<Foam::label S, Foam::label D, bool Flip>
 inline void supportSums
 (
@@ -538,8 +548,8 @@ inline void supportSums
     const Foam::label base,
     const Foam::label sy,
     const Foam::label sz,
-    const Foam::vector* __restrict__ vel,
-    const Foam::vector* __restrict__ velOld,
+    const double* __restrict__ vel4,
+    const double* __restrict__ velOld4,
     Foam::vector& vPic,
     Foam::vector& dv,
     Foam::vector& Lx,
@@ -551,6 +561,7 @@ inline void supportSums
     constexpr label SZ = (D == 3 ? S : 1);
     const scalar* wx = sw.w[0];
     const scalar* dwx = sw.dw[0];
+    v4d sPic = v4(0, 0, 0, 0), sDv = sPic, sLx = sPic, sLy = sPic, sLz = sPic;
     for (label c = 0; c < SZ; ++c)
     {
         const scalar wz = sw.w[2][c];
@@ -559,30 +570,60 @@ inline void supportSums
         {
             const scalar wy = sw.w[1][b];
             const label row = base + b*sy + c*sz;
-            vector sumW(Zero), sumDw(Zero), sumDv(Zero);
+            v4d sumW = v4(0, 0, 0, 0), sumDw = sumW, sumDv = sumW;
             for (label a = 0; a < S; ++a)
             {
-                const vector& vn = vel[row + a];
+                const v4d vn = *reinterpret_cast<const v4d*>(vel4 + 4*(row + a));
                 sumW += wx[a]*vn;
                 sumDw += dwx[a]*vn;
                 if constexpr (Flip)
                 {
-                    sumDv += wx[a]*(vn - velOld[row + a]);
+                    sumDv +=
+                        wx[a]
+                       *(vn - *reinterpret_cast<const v4d*>(velOld4 + 4*(row + a)));
                 }
             }
             const scalar wyz = wy*wz;
-            vPic += wyz*sumW;
-            Lx += wyz*sumDw;
-            Ly += (sw.dw[1][b]*wz)*sumW;
+            sPic += wyz*sumW;
+            sLx += wyz*sumDw;
+            sLy += (sw.dw[1][b]*wz)*sumW;
             if constexpr (D == 3)
             {
-                Lz += (wy*dwz)*sumW;
+                sLz += (wy*dwz)*sumW;
             }
             if constexpr (Flip)
             {
-                dv += wyz*sumDv;
+                sDv += wyz*sumDv;
             }
         }
+    }
+    vPic = vector(sPic[0], sPic[1], sPic[2]);
+    Lx = vector(sLx[0], sLx[1], sLx[2]);
+    Ly = vector(sLy[0], sLy[1], sLy[2]);
+    Lz = vector(sLz[0], sLz[1], sLz[2]);
+    if constexpr (Flip)
+    {
+        dv = vector(sDv[0], sDv[1], sDv[2]);
+    }
+}
+
+//- Node velocities padded to four doubles per node
+inline void padVelocities
+(
+    const Foam::List<Foam::vector>& vel,
+    Foam::scalarList& vel4
+)
+{
+    const Foam::label n = vel.size();
+    vel4.setSize(4*n);
+    double* __restrict__ out = vel4.data();
+    const Foam::vector* __restrict__ in = vel.cdata();
+    for (Foam::label i = 0; i < n; ++i)
+    {
+        out[4*i] = in[i].x();
+        out[4*i + 1] = in[i].y();
+        out[4*i + 2] = in[i].z();
+        out[4*i + 3] = 0;
     }
 }
 
@@ -595,19 +636,6 @@ inline Foam::vector column(const Foam::tensor& T, const Foam::direction j)
 } // End anonymous namespace
 
 
-namespace
-{
-
-//- Four doubles as one SIMD value (GCC's vector extension: AVX where the
-//  machine has it, two SSE halves otherwise), loaded and stored unaligned
-typedef double v4d __attribute__((vector_size(32), aligned(8), may_alias));
-
-inline v4d v4(const double a, const double b, const double c, const double d)
-{
-    return v4d{a, b, c, d};
-}
-
-} // End anonymous namespace
 
 
 template<Foam::label S, Foam::label D, bool Apic, bool Forces>
@@ -822,8 +850,13 @@ void Foam::materialPointSoil::g2pPoints(const scalar dt)
     const bool stressHere = (update_ == updateType::USL);
     const bool apic = (transfer_ == transferType::APIC);
     const scalar alpha = flipRatio_;
-    const vector* vel = gridVelocity_.cdata();
-    const vector* velOld = gridVelocityOld_.cdata();
+    padVelocities(gridVelocity_, velocity4_);
+    if constexpr (Flip)
+    {
+        padVelocities(gridVelocityOld_, velocityOld4_);
+    }
+    const double* vel = velocity4_.cdata();
+    const double* velOld = Flip ? velocityOld4_.cdata() : nullptr;
 
     const label nPoints = points_.size();
     if (stressHere)
@@ -890,6 +923,7 @@ void Foam::materialPointSoil::stressPoints
     const label sy = lattice_.stride().y();
     const label sz = lattice_.stride().z();
 
+    padVelocities(vel, velocity4_);
     const label nPoints = points_.size();
     strainIncrement_.setSize(nPoints);
     for (label p = 0; p < nPoints; ++p)
@@ -900,7 +934,7 @@ void Foam::materialPointSoil::stressPoints
         (
             sw,
             lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
-            sy, sz, vel.cdata(), nullptr, vPic, dv, Lx, Ly, Lz
+            sy, sz, velocity4_.cdata(), nullptr, vPic, dv, Lx, Ly, Lz
         );
         const tensor L
         (
@@ -1522,7 +1556,7 @@ Foam::scalar Foam::materialPointSoil::memoryBytes() const
             materialPoints::memoryPerPoint() + sizeof(shapeWeights)
           + sizeof(symmTensor)
         )
-      + scalar(lattice_.nBox())*(sizeof(scalar) + 4*sizeof(vector)),
+      + scalar(lattice_.nBox())*(sizeof(scalar) + 4*sizeof(vector) + 8*sizeof(scalar)),
         sumOp<scalar>()
     );
 }
