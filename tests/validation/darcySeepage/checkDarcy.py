@@ -27,8 +27,11 @@
 #       within 1e-3, and uniform across each section of the middle half
 #       (slip side walls: plug flow) within 1e-3;
 #     - local Darcy law in the middle 80% of the column: q against
-#       (k/mu)(-dp/dx) of the pore pressure's slope there, within 2%;
-#     - global: q against (k/mu) DP/L within 2% (the pore pressure is
+#       (k/mu)(-dp/dx) of the pore pressure's slope there, within 1e-4
+#       (the issue asks 2%; measured a few 1e-6 since the corners where a
+#       slip side meets a pressure patch take the patch's extrapolation,
+#       1.2% before);
+#     - global: q against (k/mu) DP/L within 1e-4 (the pore pressure is
 #       continuous where the water enters and leaves the soil: no loss at
 #       the ends).
 #------------------------------------------------------------------------------
@@ -94,10 +97,10 @@ ok &= foamio.check(spread <= 1e-3 and across <= 1e-3,
                    '%s seepage: steady plug flow, the same flux through every section'
                    % model, 'relative spread along %.1e, across %.1e' % (spread, across))
 e = qm / qLocal - 1
-ok &= foamio.check(abs(e) <= 0.02, '%s seepage: Darcy q = (k/mu)(-dp/dx) within 2%% inside '
+ok &= foamio.check(abs(e) <= 1e-4, '%s seepage: Darcy q = (k/mu)(-dp/dx) within 1e-4 inside '
                    'the column (k = %.4e m2, Re = %.1e)' % (model, k, Re),
-                   'q %.5e m/s, -dp/dx %.2f Pa/m, deviation %+.4f' % (qm, -slope, e))
+                   'q %.6e m/s, -dp/dx %.3f Pa/m, deviation %+.1e' % (qm, -slope, e))
 e = qm / qGlobal - 1
-ok &= foamio.check(abs(e) <= 0.02, '%s seepage: q = (k/mu) dp/L within 2%%' % model,
-                   'q %.5e m/s vs %.5e, deviation %+.4f' % (qm, qGlobal, e))
+ok &= foamio.check(abs(e) <= 1e-4, '%s seepage: q = (k/mu) dp/L within 1e-4' % model,
+                   'q %.6e m/s vs %.6e, deviation %+.1e' % (qm, qGlobal, e))
 sys.exit(0 if ok else 1)
