@@ -976,10 +976,11 @@ void Foam::constitutiveModels::MohrCoulomb::updatePacked
         }
     }
 
-    mask4 fallback = (p2 != p2);    // no lane (p2 is finite)
-    mask4 plastic = fallback;
+    const mask4 none = {0, 0, 0, 0};
+    mask4 fallback = none;
+    mask4 plastic = none;
     double4 out[6], sC[3], dPlastic = splat(0.0);
-    mask4 apexLane = fallback, line1Lane = fallback, planeLane = fallback;
+    mask4 apexLane = none, line1Lane = none, planeLane = none;
 
     if (!all(elastic))
     {
