@@ -15,6 +15,7 @@ License
 #include "volFields.H"
 #include "emptyPolyPatch.H"
 #include "DynamicList.H"
+#include "packedDouble4.H"
 
 #include <type_traits>
 
@@ -527,9 +528,8 @@ inline void withSupport(const Foam::label S, const Foam::label D, Kernel&& k)
         << D << "D (2, 3 or 4 nodes are built)" << Foam::abort(Foam::FatalError);
 }
 
-//- Four doubles as one SIMD value (GCC's vector extension: AVX where the
-//  machine has it, two SSE halves otherwise), loaded and stored unaligned
-typedef double v4d __attribute__((vector_size(32), aligned(8), may_alias));
+//- Four doubles as one SIMD value, loaded and stored in place
+typedef Foam::packed::double4InPlace v4d;
 
 inline v4d v4(const double a, const double b, const double c, const double d)
 {
