@@ -16,6 +16,10 @@ License
 #include "emptyPolyPatch.H"
 #include "DynamicList.H"
 #include "packedDouble4.H"
+#include "linearShapeFunction.H"
+#include "GIMP.H"
+#include "quadraticBSpline.H"
+#include "cubicBSpline.H"
 
 #include <type_traits>
 
@@ -459,24 +463,36 @@ void Foam::materialPointSoil::checkPeriodicReach() const
 }
 
 
-void Foam::materialPointSoil::computeWeights()
+template<class Shape, Foam::label D>
+inline void Foam::materialPointSoil::pointWeights
+(
+    const label p,
+    const vector& xl,
+    shapeWeights& sw
+) const
 {
-    const label nDim = lattice_.nDim();
-    if (periodic_)
-    {
-        checkPeriodicReach();
-    }
-    weights_.setSize(points_.size());
-    forAll(points_.x, p)
-    {
-        shape_->weights
-        (
-            latticeCoordinates(points_.x[p]),
-            points_.halfLength[p],
-            nDim,
-            weights_[p]
-        );
-    }
+    tensorProductWeights<Shape, D>
+    (
+        xl,
+        Shape::usesHalfLength ? points_.halfLength[p] : vector::zero,
+        sw
+    );
+}
+
+
+inline void Foam::materialPointSoil::pointWeights
+(
+    const label p,
+    shapeWeights& sw
+) const
+{
+    shape_->weights
+    (
+        latticeCoordinates(points_.x[p]),
+        points_.halfLength[p],
+        lattice_.nDim(),
+        sw
+    );
 }
 
 
@@ -500,33 +516,67 @@ namespace
 template<Foam::label N>
 using labelConstant = std::integral_constant<Foam::label, N>;
 
-//- Call k(S, D) with the support S (nodes per direction) and the dimension
-//  D as compile-time constants, so that the kernels' node loops unroll
-template<class Kernel>
-inline void withSupport(const Foam::label S, const Foam::label D, Kernel&& k)
+//- A shape function model as a type, to pass to a generic lambda
+template<class Shape>
+struct shapeTag
 {
-    if (D == 3)
+    typedef Shape type;
+};
+
+//- Call k(shapeTag<Shape>, D) with the model of the shape function and the
+//  dimension D as compile-time constants, so that the kernels' weights
+//  inline and their node loops unroll
+template<Foam::label D, class Kernel>
+inline void withShapeIn(const Foam::shapeFunction& shape, Kernel&& k)
+{
+    using namespace Foam::shapeFunctions;
+    if (Foam::isA<quadraticBSpline>(shape))
     {
-        switch (S)
-        {
-            case 2: k(labelConstant<2>(), labelConstant<3>()); return;
-            case 3: k(labelConstant<3>(), labelConstant<3>()); return;
-            case 4: k(labelConstant<4>(), labelConstant<3>()); return;
-        }
+        k(shapeTag<quadraticBSpline>(), labelConstant<D>());
+    }
+    else if (Foam::isA<cubicBSpline>(shape))
+    {
+        k(shapeTag<cubicBSpline>(), labelConstant<D>());
+    }
+    else if (Foam::isA<GIMP>(shape))
+    {
+        k(shapeTag<GIMP>(), labelConstant<D>());
+    }
+    else if (Foam::isA<linear>(shape))
+    {
+        k(shapeTag<linear>(), labelConstant<D>());
     }
     else
     {
-        switch (S)
-        {
-            case 2: k(labelConstant<2>(), labelConstant<2>()); return;
-            case 3: k(labelConstant<3>(), labelConstant<2>()); return;
-            case 4: k(labelConstant<4>(), labelConstant<2>()); return;
-        }
+        FatalErrorInFunction
+            << "No transfer kernel for shape function " << shape.type()
+            << " (linear, GIMP, quadraticBSpline and cubicBSpline are built)"
+            << Foam::abort(Foam::FatalError);
     }
-    FatalErrorInFunction
-        << "No transfer kernel for " << S << " nodes per direction in "
-        << D << "D (2, 3 or 4 nodes are built)" << Foam::abort(Foam::FatalError);
 }
+
+template<class Kernel>
+inline void withShape
+(
+    const Foam::shapeFunction& shape,
+    const Foam::label D,
+    Kernel&& k
+)
+{
+    if (D == 3)
+    {
+        withShapeIn<3>(shape, k);
+    }
+    else
+    {
+        withShapeIn<2>(shape, k);
+    }
+}
+
+//- Points per block of the grid-to-point loop: the block's constitutive
+//  update follows it while its stresses and strain increments are in the
+//  cache (512 points: 24 kB of increments)
+constexpr Foam::label pointBlock = 512;
 
 //- Four doubles as one SIMD value, loaded and stored in place
 typedef Foam::packed::double4InPlace v4d;
@@ -638,7 +688,7 @@ inline Foam::vector column(const Foam::tensor& T, const Foam::direction j)
 
 
 
-template<Foam::label S, Foam::label D, bool Apic, bool Forces>
+template<class Shape, Foam::label D, bool Apic, bool Forces>
 void Foam::materialPointSoil::p2gPoints(const vector& g)
 {
     // Per node of point p, weight N = wx wy wz, gradient (lattice units)
@@ -653,6 +703,7 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
     // A_a = (m, m v + C r_x(a) m dx | m g + f_ext, 0),
     // R   = (0, wyz m C (r_y, r_z) dx | -V sigma.(w'y wz, wy w'z)/dx, 0),
     // B_a = (0, 0 | -V sigma.e_x w'x_a/dx, 0).
+    constexpr label S = Shape::supportSize;
     constexpr label SZ = (D == 3 ? S : 1);
     constexpr label W = (Forces ? 8 : 4);
     const scalar dx = lattice_.dx();
@@ -669,7 +720,9 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
     const label nPoints = points_.size();
     for (label p = 0; p < nPoints; ++p)
     {
-        const shapeWeights& sw = weights_[p];
+        const vector xl(latticeCoordinates(points_.x[p]));
+        shapeWeights sw;
+        pointWeights<Shape, D>(p, xl, sw);
         const scalar mp = points_.m[p];
         const vector mv(mp*points_.v[p]);
         const scalar* wx = sw.w[0];
@@ -680,7 +733,6 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
         scalar ry[S], rz[SZ];
         if constexpr (Apic)
         {
-            const vector xl(latticeCoordinates(points_.x[p]));
             mCdx = (mp*dx)*points_.C[p];
             const vector cx(column(mCdx, 0));
             for (label a = 0; a < S; ++a)
@@ -786,10 +838,11 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
 }
 
 
-template<Foam::label S, Foam::label D>
+template<class Shape, Foam::label D>
 void Foam::materialPointSoil::p2gForcePoints(const vector& g)
 {
     // The force part of p2gPoints (USF: after the stress update)
+    constexpr label S = Shape::supportSize;
     constexpr label SZ = (D == 3 ? S : 1);
     const scalar invDx = 1.0/lattice_.dx();
     const label sy = lattice_.stride().y();
@@ -800,7 +853,8 @@ void Foam::materialPointSoil::p2gForcePoints(const vector& g)
     const label nPoints = points_.size();
     for (label p = 0; p < nPoints; ++p)
     {
-        const shapeWeights& sw = weights_[p];
+        shapeWeights sw;
+        pointWeights<Shape, D>(p, latticeCoordinates(points_.x[p]), sw);
         const scalar mp = points_.m[p];
         const vector mg(fExt ? mp*g + fExt[p] : mp*g);
         const symmTensor B(-(points_.V[p]*invDx)*points_.sigma[p]);
@@ -839,16 +893,19 @@ void Foam::materialPointSoil::p2gForcePoints(const vector& g)
 }
 
 
-template<Foam::label S, Foam::label D, bool Flip>
+template<class Shape, Foam::label D, bool Flip>
 void Foam::materialPointSoil::g2pPoints(const scalar dt)
 {
     // Per point: v = sum N v_n, L = sum v_n gradN/dx (and FLIP's
-    // sum N (v_n - v_n,old)), from supportSums
+    // sum N (v_n - v_n,old)), from supportSums; in blocks of pointBlock
+    // points, each followed by its constitutive update (USL)
+    constexpr label S = Shape::supportSize;
     const scalar invDx = 1.0/lattice_.dx();
     const label sy = lattice_.stride().y();
     const label sz = lattice_.stride().z();
     const bool stressHere = (update_ == updateType::USL);
     const bool apic = (transfer_ == transferType::APIC);
+    const bool parallel = Pstream::parRun();
     const scalar alpha = flipRatio_;
     padVelocities(gridVelocity_, velocity4_);
     if constexpr (Flip)
@@ -857,94 +914,108 @@ void Foam::materialPointSoil::g2pPoints(const scalar dt)
     }
     const double* vel = velocity4_.cdata();
     const double* velOld = Flip ? velocityOld4_.cdata() : nullptr;
+    symmTensor* dStrain = strainIncrement_.data();
+    leavingPoint_.clear();
+    leavingProc_.clear();
 
     const label nPoints = points_.size();
-    if (stressHere)
+    for (label start = 0; start < nPoints; start += pointBlock)
     {
-        strainIncrement_.setSize(nPoints);
-    }
-    for (label p = 0; p < nPoints; ++p)
-    {
-        const shapeWeights& sw = weights_[p];
-        vector vPic(Zero), dv(Zero), Lx(Zero), Ly(Zero), Lz(Zero);
-        supportSums<S, D, Flip>
-        (
-            sw,
-            lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
-            sy, sz, vel, velOld, vPic, dv, Lx, Ly, Lz
-        );
-        const tensor L
-        (
-            invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
-            invDx*Lx.y(), invDx*Ly.y(), invDx*Lz.y(),
-            invDx*Lx.z(), invDx*Ly.z(), invDx*Lz.z()
-        );
+        const label end = min(start + pointBlock, nPoints);
+        for (label p = start; p < end; ++p)
+        {
+            shapeWeights sw;
+            pointWeights<Shape, D>(p, latticeCoordinates(points_.x[p]), sw);
+            vector vPic(Zero), dv(Zero), Lx(Zero), Ly(Zero), Lz(Zero);
+            supportSums<S, D, Flip>
+            (
+                sw,
+                lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
+                sy, sz, vel, velOld, vPic, dv, Lx, Ly, Lz
+            );
+            const tensor L
+            (
+                invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
+                invDx*Lx.y(), invDx*Ly.y(), invDx*Lz.y(),
+                invDx*Lx.z(), invDx*Ly.z(), invDx*Lz.z()
+            );
 
-        if constexpr (Flip)
-        {
-            points_.v[p] = alpha*(points_.v[p] + dv) + (1 - alpha)*vPic;
-        }
-        else
-        {
-            points_.v[p] = vPic;
-            if (apic)
+            if constexpr (Flip)
             {
-                points_.C[p] = L;
+                points_.v[p] = alpha*(points_.v[p] + dv) + (1 - alpha)*vPic;
+            }
+            else
+            {
+                points_.v[p] = vPic;
+                if (apic)
+                {
+                    points_.C[p] = L;
+                }
+            }
+
+            if (stressHere)
+            {
+                updatePointStress(p, L, dt, dStrain[p - start]);
+            }
+
+            points_.x[p] += dt*vPic;
+            if (clamp(points_.x[p]))
+            {
+                ++nClamped_;
+            }
+            if (parallel)
+            {
+                noteLeaving(p);
             }
         }
 
         if (stressHere)
         {
-            updatePointStress(p, L, dt);
+            updateConstitutive(start, end);
         }
-
-        points_.x[p] += dt*vPic;
-        if (clamp(points_.x[p]))
-        {
-            ++nClamped_;
-        }
-    }
-
-    if (stressHere)
-    {
-        updateConstitutive();
     }
 }
 
 
-template<Foam::label S, Foam::label D>
+template<class Shape, Foam::label D>
 void Foam::materialPointSoil::stressPoints
 (
     const List<vector>& vel,
     const scalar dt
 )
 {
+    constexpr label S = Shape::supportSize;
     const scalar invDx = 1.0/lattice_.dx();
     const label sy = lattice_.stride().y();
     const label sz = lattice_.stride().z();
 
     padVelocities(vel, velocity4_);
+    symmTensor* dStrain = strainIncrement_.data();
     const label nPoints = points_.size();
-    strainIncrement_.setSize(nPoints);
-    for (label p = 0; p < nPoints; ++p)
+    for (label start = 0; start < nPoints; start += pointBlock)
     {
-        const shapeWeights& sw = weights_[p];
-        vector vPic(Zero), dv(Zero), Lx(Zero), Ly(Zero), Lz(Zero);
-        supportSums<S, D, false>
-        (
-            sw,
-            lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
-            sy, sz, velocity4_.cdata(), nullptr, vPic, dv, Lx, Ly, Lz
-        );
-        const tensor L
-        (
-            invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
-            invDx*Lx.y(), invDx*Ly.y(), invDx*Lz.y(),
-            invDx*Lx.z(), invDx*Ly.z(), invDx*Lz.z()
-        );
-        updatePointStress(p, L, dt);
+        const label end = min(start + pointBlock, nPoints);
+        for (label p = start; p < end; ++p)
+        {
+            shapeWeights sw;
+            pointWeights<Shape, D>(p, latticeCoordinates(points_.x[p]), sw);
+            vector vPic(Zero), dv(Zero), Lx(Zero), Ly(Zero), Lz(Zero);
+            supportSums<S, D, false>
+            (
+                sw,
+                lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
+                sy, sz, velocity4_.cdata(), nullptr, vPic, dv, Lx, Ly, Lz
+            );
+            const tensor L
+            (
+                invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
+                invDx*Lx.y(), invDx*Ly.y(), invDx*Lz.y(),
+                invDx*Lx.z(), invDx*Ly.z(), invDx*Lz.z()
+            );
+            updatePointStress(p, L, dt, dStrain[p - start]);
+        }
+        updateConstitutive(start, end);
     }
-    updateConstitutive();
 }
 
 
@@ -952,10 +1023,11 @@ inline void Foam::materialPointSoil::updatePointStress
 (
     const label p,
     const tensor& L,
-    const scalar dt
+    const scalar dt,
+    symmTensor& dStrain
 )
 {
-    // Jaumann rotation now, the constitutive update after the point loop
+    // Jaumann rotation now, the constitutive update after the block
     // (updateConstitutive: it needs nothing else of this point's update).
     // With the spin W = skew(L) = [0 a b; -a 0 c; -b -c 0] and M = W s,
     // W s - s W = M + M^T (s symmetric, W skew): six components from the
@@ -975,33 +1047,36 @@ inline void Foam::materialPointSoil::updatePointStress
             -2*(b*s.xz() + c*s.yz())
         );
     }
-    strainIncrement_[p] = symm(L)*dt;
+    dStrain = symm(L)*dt;
     points_.F[p] = (tensor::I + dt*L) & points_.F[p];
     updateVolume(p);
 }
 
 
-void Foam::materialPointSoil::updateConstitutive()
+void Foam::materialPointSoil::updateConstitutive
+(
+    const label start,
+    const label end
+)
 {
-    const label nPoints = points_.size();
     const label* material = points_.material.cdata();
-    label start = 0;
-    while (start < nPoints)
+    label first = start;
+    while (first < end)
     {
-        const label m = material[start];
-        label end = start + 1;
-        while (end < nPoints && material[end] == m)
+        const label m = material[first];
+        label last = first + 1;
+        while (last < end && material[last] == m)
         {
-            ++end;
+            ++last;
         }
         materials_[m].updateStresses
         (
-            end - start,
-            strainIncrement_.cdata() + start,
-            points_.sigma.data() + start,
-            points_.plasticStrain.data() + start
+            last - first,
+            strainIncrement_.cdata() + (first - start),
+            points_.sigma.data() + first,
+            points_.plasticStrain.data() + first
         );
-        start = end;
+        first = last;
     }
 }
 
@@ -1013,17 +1088,17 @@ void Foam::materialPointSoil::p2gMassMomentum(const bool withForces)
     const vector g(ramp*gravity_);
     const bool apic = (transfer_ == transferType::APIC);
 
-    withSupport
+    withShape
     (
-        shape_->support(), lattice_.nDim(),
-        [&](auto S, auto D)
+        shape_(), lattice_.nDim(),
+        [&](auto shape, auto D)
         {
-            constexpr label s = decltype(S)::value;
+            typedef typename decltype(shape)::type Shape;
             constexpr label d = decltype(D)::value;
-            if (apic && withForces) { p2gPoints<s, d, true, true>(g); }
-            else if (apic)          { p2gPoints<s, d, true, false>(g); }
-            else if (withForces)    { p2gPoints<s, d, false, true>(g); }
-            else                    { p2gPoints<s, d, false, false>(g); }
+            if (apic && withForces) { p2gPoints<Shape, d, true, true>(g); }
+            else if (apic)          { p2gPoints<Shape, d, true, false>(g); }
+            else if (withForces)    { p2gPoints<Shape, d, false, true>(g); }
+            else                    { p2gPoints<Shape, d, false, false>(g); }
         }
     );
 }
@@ -1083,12 +1158,15 @@ void Foam::materialPointSoil::p2gForces()
     const scalar ramp =
         (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
     const vector g(ramp*gravity_);
-    withSupport
+    withShape
     (
-        shape_->support(), lattice_.nDim(),
-        [&](auto S, auto D)
+        shape_(), lattice_.nDim(),
+        [&](auto shape, auto D)
         {
-            p2gForcePoints<decltype(S)::value, decltype(D)::value>(g);
+            p2gForcePoints
+            <
+                typename decltype(shape)::type, decltype(D)::value
+            >(g);
         }
     );
 }
@@ -1124,15 +1202,15 @@ void Foam::materialPointSoil::applyContact(List<vector>& vel) const
 void Foam::materialPointSoil::g2p(const scalar dt)
 {
     const bool flip = (transfer_ == transferType::FLIP);
-    withSupport
+    withShape
     (
-        shape_->support(), lattice_.nDim(),
-        [&](auto S, auto D)
+        shape_(), lattice_.nDim(),
+        [&](auto shape, auto D)
         {
-            constexpr label s = decltype(S)::value;
+            typedef typename decltype(shape)::type Shape;
             constexpr label d = decltype(D)::value;
-            if (flip) { g2pPoints<s, d, true>(dt); }
-            else      { g2pPoints<s, d, false>(dt); }
+            if (flip) { g2pPoints<Shape, d, true>(dt); }
+            else      { g2pPoints<Shape, d, false>(dt); }
         }
     );
 }
@@ -1144,12 +1222,15 @@ void Foam::materialPointSoil::updateStresses
     const scalar dt
 )
 {
-    withSupport
+    withShape
     (
-        shape_->support(), lattice_.nDim(),
-        [&](auto S, auto D)
+        shape_(), lattice_.nDim(),
+        [&](auto shape, auto D)
         {
-            stressPoints<decltype(S)::value, decltype(D)::value>(vel, dt);
+            stressPoints
+            <
+                typename decltype(shape)::type, decltype(D)::value
+            >(vel, dt);
         }
     );
 }
@@ -1200,44 +1281,53 @@ Foam::label Foam::materialPointSoil::cellNodeOf(const vector& x) const
 }
 
 
-void Foam::materialPointSoil::migrate()
+inline void Foam::materialPointSoil::noteLeaving(const label p)
 {
     // The owner of a point is the owner of the cell containing it (the
     // global cell index from the position: the same on every processor).
     // A point moves less than a cell per sub-step (CFL <= 1), so from an
     // owned cell it reaches an owned cell or a halo cell, whose owner is
     // known here.
-    const label myProc = Pstream::myProcNo();
-    labelList toProc(points_.size(), -1);
-    forAll(points_.x, p)
+    const label n = cellNodeOf(points_.x[p]);
+    if (n < 0)
     {
-        const label n = cellNodeOf(points_.x[p]);
-        if (n < 0)
-        {
-            FatalErrorInFunction
-                << "Material point " << points_.id[p] << " at "
-                << points_.x[p] << " moved beyond the halo of processor "
-                << myProc << " in one sub-step at time "
-                << mesh_.time().timeName() << " s" << nl
-                << "    A point must move less than a cell per sub-step:"
-                << " lower the CFL of constant/soilProperties"
-                << exit(FatalError);
-        }
-        const label owner = nodeOwner_[n];
-        if (owner >= 0 && owner != myProc)
-        {
-            toProc[p] = owner;
-        }
+        FatalErrorInFunction
+            << "Material point " << points_.id[p] << " at "
+            << points_.x[p] << " moved beyond the halo of processor "
+            << Pstream::myProcNo() << " in one sub-step at time "
+            << mesh_.time().timeName() << " s" << nl
+            << "    A point must move less than a cell per sub-step:"
+            << " lower the CFL of constant/soilProperties"
+            << exit(FatalError);
     }
-    points_.migrate(toProc, hasPointForces_ ? &pointForce_ : nullptr);
+    const label owner = nodeOwner_[n];
+    if (owner >= 0 && owner != Pstream::myProcNo())
+    {
+        leavingPoint_.append(p);
+        leavingProc_.append(owner);
+    }
+}
+
+
+void Foam::materialPointSoil::migrate()
+{
+    points_.migrate
+    (
+        leavingPoint_,
+        leavingProc_,
+        hasPointForces_ ? &pointForce_ : nullptr
+    );
+    leavingPoint_.clear();
+    leavingProc_.clear();
 }
 
 
 void Foam::materialPointSoil::subStep(const scalar dt)
 {
-    // The weights of the points at the start of the sub-step serve every
-    // transfer of the sub-step (once per point, not per transfer)
-    computeWeights();
+    if (periodic_)
+    {
+        checkPeriodicReach();
+    }
 
     const bool usf = (update_ == updateType::USF);
     const bool parallel = Pstream::parRun();
@@ -1323,8 +1413,12 @@ void Foam::materialPointSoil::subStep(const scalar dt)
 
     if (update_ == updateType::MUSL)
     {
-        // The points have moved: new weights for the second mapping
-        computeWeights();
+        // The points have moved (the second mapping's weights are those of
+        // the new positions)
+        if (periodic_)
+        {
+            checkPeriodicReach();
+        }
         p2gMassMomentum(false);
         foldGhosts(gridMomentum_, true);
         if (parallel)
@@ -1443,6 +1537,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     gridForce_.setSize(nBox, Zero);
     gridVelocity_.setSize(nBox, Zero);
     gridVelocityOld_.setSize(nBox, Zero);
+    strainIncrement_.setSize(pointBlock);
     buildGhosts();
 
     // The owner of every node a point can move into
@@ -1549,14 +1644,18 @@ Foam::label Foam::materialPointSoil::nPoints() const
 
 Foam::scalar Foam::materialPointSoil::memoryBytes() const
 {
+    // Per point the stored arrays only: the weights are evaluated where
+    // they are used, the strain increments kept for one block of points.
+    // Per box node: mass, momentum, force, velocity and old velocity, the
+    // particle-to-grid records (8 doubles) and the velocities padded to 4
+    // doubles (FLIP's old ones too)
+    const label nPadded = (transfer_ == transferType::FLIP ? 8 : 4);
     return returnReduce
     (
-        scalar(points_.size())
-       *(
-            materialPoints::memoryPerPoint() + sizeof(shapeWeights)
-          + sizeof(symmTensor)
-        )
-      + scalar(lattice_.nBox())*(sizeof(scalar) + 4*sizeof(vector) + 8*sizeof(scalar)),
+        scalar(points_.size())*materialPoints::memoryPerPoint()
+      + scalar(pointBlock)*sizeof(symmTensor)
+      + scalar(lattice_.nBox())
+       *(sizeof(scalar) + 4*sizeof(vector) + (8 + nPadded)*sizeof(scalar)),
         sumOp<scalar>()
     );
 }
@@ -1577,13 +1676,18 @@ void Foam::materialPointSoil::nodalFields
     mass.setSize(nBox);
     mass = 0;
 
-    computeWeights();
+    if (periodic_)
+    {
+        checkPeriodicReach();
+    }
     forAll(points_.x, p)
     {
         const scalar Vs = points_.V[p]*(1 - points_.porosity[p]);
         const scalar mp = points_.m[p];
         const vector& vp = points_.v[p];
-        weights_[p].forEachNode
+        shapeWeights sw;
+        pointWeights(p, sw);
+        sw.forEachNode
         (
             [&](label i, label j, label k, scalar N, const vector&)
             {
@@ -1677,7 +1781,9 @@ void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
     {
         const scalar mp = points_.m[p];
         vector f(Zero);
-        weights_[p].forEachNode
+        shapeWeights sw;
+        pointWeights(p, sw);
+        sw.forEachNode
         (
             [&](label i, label j, label k, scalar N, const vector&)
             {

@@ -17,6 +17,7 @@ License
 #include "globalIndex.H"
 #include "PstreamBuffers.H"
 #include "DynamicList.H"
+#include "PtrList.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -151,6 +152,7 @@ Foam::label Foam::materialPoints::memoryPerPoint()
 
 void Foam::materialPoints::migrate
 (
+    const labelUList& leaving,
     const labelUList& toProc,
     List<vector>* extra
 )
@@ -158,26 +160,24 @@ void Foam::materialPoints::migrate
     const label nProcs = Pstream::nProcs();
     const label n = size();
 
-    List<DynamicList<label>> leaving(nProcs);
-    forAll(toProc, p)
+    List<DynamicList<label>> sendPoints(nProcs);
+    forAll(leaving, i)
     {
-        if (toProc[p] >= 0)
-        {
-            leaving[toProc[p]].append(p);
-        }
+        sendPoints[toProc[i]].append(leaving[i]);
     }
 
     // Send every quantity of the leaving points, in one message per
-    // processor
+    // processor, headed by their number
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    forAll(leaving, proci)
+    forAll(sendPoints, proci)
     {
-        if (leaving[proci].empty())
+        const labelUList& idx = sendPoints[proci];
+        if (idx.empty())
         {
             continue;
         }
-        const labelList idx(leaving[proci]);
         UOPstream os(proci, pBufs);
+        os << idx.size();
         auto put = [&](const auto& values)
         {
             typedef typename std::decay<decltype(values[0])>::type Type;
@@ -194,52 +194,74 @@ void Foam::materialPoints::migrate
     labelList recvSizes;
     pBufs.finishedSends(recvSizes);
 
-    // Keep the others, in their order
-    label k = 0;
-    for (label p = 0; p < n; ++p)
+    // The number of arrivals from each sender first, so that each array
+    // is resized once
+    PtrList<UIPstream> from(nProcs);
+    label nArriving = 0;
+    forAll(recvSizes, proci)
     {
-        if (toProc[p] >= 0)
+        if (recvSizes[proci])
         {
+            from.set(proci, new UIPstream(proci, pBufs));
+            label nFrom = 0;
+            from[proci] >> nFrom;
+            nArriving += nFrom;
+        }
+    }
+    if (leaving.empty() && !nArriving)
+    {
+        return;
+    }
+
+    // Keep the others, in their order: close the gaps from the first
+    // leaving point on
+    label k = leaving.size() ? leaving[0] : n;
+    label next = 0;
+    for (label p = k; p < n; ++p)
+    {
+        if (next < leaving.size() && leaving[next] == p)
+        {
+            ++next;
             continue;
         }
-        if (k != p)
+        x[k] = x[p]; v[k] = v[p]; m[k] = m[p]; V[k] = V[p];
+        V0[k] = V0[p]; F[k] = F[p]; sigma[k] = sigma[p];
+        plasticStrain[k] = plasticStrain[p]; C[k] = C[p];
+        material[k] = material[p]; halfLength[k] = halfLength[p];
+        porosity[k] = porosity[p]; id[k] = id[p];
+        if (extra)
         {
-            x[k] = x[p]; v[k] = v[p]; m[k] = m[p]; V[k] = V[p];
-            V0[k] = V0[p]; F[k] = F[p]; sigma[k] = sigma[p];
-            plasticStrain[k] = plasticStrain[p]; C[k] = C[p];
-            material[k] = material[p]; halfLength[k] = halfLength[p];
-            porosity[k] = porosity[p]; id[k] = id[p];
-            if (extra)
-            {
-                (*extra)[k] = (*extra)[p];
-            }
+            (*extra)[k] = (*extra)[p];
         }
         ++k;
     }
-    setSize(k);
-    if (extra)
+    if (k + nArriving != n)
     {
-        extra->setSize(k);
+        setSize(k + nArriving);
+        if (extra)
+        {
+            extra->setSize(k + nArriving);
+        }
     }
 
     // Append the arrivals by sending processor
-    forAll(recvSizes, proci)
+    forAll(from, proci)
     {
-        if (!recvSizes[proci])
+        if (!from.set(proci))
         {
             continue;
         }
-        UIPstream is(proci, pBufs);
+        UIPstream& is = from[proci];
+        const label start = k;
         auto get = [&](auto& values)
         {
             typedef typename std::decay<decltype(values[0])>::type Type;
-            List<Type> in(is);
-            const label start = values.size();
-            values.setSize(start + in.size());
+            const List<Type> in(is);
             forAll(in, i)
             {
                 values[start + i] = in[i];
             }
+            k = start + in.size();
         };
         get(x); get(v); get(m); get(V); get(V0); get(F); get(sigma);
         get(plasticStrain); get(C); get(material); get(halfLength);
