@@ -22,6 +22,8 @@ License
 #include "cubicBSpline.H"
 
 #include <type_traits>
+#include <cstdint>
+#include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -578,12 +580,27 @@ inline void withShape
 //  cache (512 points: 24 kB of increments)
 constexpr Foam::label pointBlock = 512;
 
-//- Four doubles as one SIMD value, loaded and stored in place
+//- Four and eight doubles as one SIMD value, loaded and stored in place
 typedef Foam::packed::double4InPlace v4d;
+typedef Foam::packed::double8InPlace v8d;
 
 inline v4d v4(const double a, const double b, const double c, const double d)
 {
     return v4d{a, b, c, d};
+}
+
+inline v8d v8(const v4d lo, const v4d hi)
+{
+    return v8d{lo[0], lo[1], lo[2], lo[3], hi[0], hi[1], hi[2], hi[3]};
+}
+
+//- The first address at or after p on a 64-byte boundary (a cache line):
+//  the node records and padded velocities start there, so that no record
+//  or velocity straddles two lines
+inline double* cacheLineAligned(double* p)
+{
+    const std::uintptr_t a = reinterpret_cast<std::uintptr_t>(p);
+    return reinterpret_cast<double*>((a + 63) & ~std::uintptr_t(63));
 }
 
 //- The sums of one point over its support nodes: vPic = sum N v_n,
@@ -657,16 +674,17 @@ inline void supportSums
     }
 }
 
-//- Node velocities padded to four doubles per node
-inline void padVelocities
+//- Node velocities padded to four doubles per node, from the first cache
+//  line boundary of vel4 on (returned)
+inline const double* padVelocities
 (
     const Foam::List<Foam::vector>& vel,
     Foam::scalarList& vel4
 )
 {
     const Foam::label n = vel.size();
-    vel4.setSize(4*n);
-    double* __restrict__ out = vel4.data();
+    vel4.setSize(4*n + 8);
+    double* __restrict__ out = cacheLineAligned(vel4.data());
     const Foam::vector* __restrict__ in = vel.cdata();
     for (Foam::label i = 0; i < n; ++i)
     {
@@ -675,6 +693,7 @@ inline void padVelocities
         out[4*i + 2] = in[i].z();
         out[4*i + 3] = 0;
     }
+    return out;
 }
 
 //- Column j of a tensor
@@ -713,9 +732,11 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
     const vector* fExt = pointForce_.size() ? pointForce_.cdata() : nullptr;
     const label nBox = gridMass_.size();
 
-    p2gScratch_.setSize(W*nBox);
-    p2gScratch_ = 0;
-    scalar* __restrict__ rec = p2gScratch_.data();
+    // (sized once for 8 values per node, whatever W: MUSL maps with and
+    // without forces in one sub-step)
+    p2gScratch_.setSize(8*nBox + 8);
+    scalar* __restrict__ rec = cacheLineAligned(p2gScratch_.data());
+    std::fill(rec, rec + W*nBox, 0.0);
 
     const label nPoints = points_.size();
     for (label p = 0; p < nPoints; ++p)
@@ -728,7 +749,8 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
         const scalar* wx = sw.w[0];
         const scalar* dwx = sw.dw[0];
 
-        v4d Alo[S], Ahi[S], Bhi[S];
+        v4d Alo[S];
+        v8d A8[S], B8[S];
         tensor mCdx(Zero);
         scalar ry[S], rz[SZ];
         if constexpr (Apic)
@@ -763,8 +785,12 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
             Bz = vector(Bs.xz(), Bs.yz(), Bs.zz());
             for (label a = 0; a < S; ++a)
             {
-                Ahi[a] = v4(mg.x(), mg.y(), mg.z(), 0);
-                Bhi[a] = v4(Bs.xx(), Bs.xy(), Bs.xz(), 0)*dwx[a];
+                A8[a] = v8(Alo[a], v4(mg.x(), mg.y(), mg.z(), 0));
+                B8[a] = v8
+                (
+                    v4(0, 0, 0, 0),
+                    v4(Bs.xx(), Bs.xy(), Bs.xz(), 0)*dwx[a]
+                );
             }
         }
 
@@ -804,15 +830,23 @@ void Foam::materialPointSoil::p2gPoints(const vector& g)
                 }
 
                 scalar* __restrict__ r = rec + W*row;
-                for (label a = 0; a < S; ++a)
+                if constexpr (Forces)
                 {
-                    const scalar wxa = wx[a];
-                    v4d* lo = reinterpret_cast<v4d*>(r + W*a);
-                    *lo += wxa*(wyz*Alo[a] + Rlo);
-                    if constexpr (Forces)
+                    // The whole record at once: (A_a, B_a) as eight values
+                    // (B_a's lower half zero)
+                    const v8d R = v8(Rlo, Rhi);
+                    for (label a = 0; a < S; ++a)
                     {
-                        v4d* hi = reinterpret_cast<v4d*>(r + W*a + 4);
-                        *hi += wxa*(wyz*Ahi[a] + Rhi) + wyz*Bhi[a];
+                        v8d* node = reinterpret_cast<v8d*>(r + W*a);
+                        *node += wx[a]*(wyz*A8[a] + R) + wyz*B8[a];
+                    }
+                }
+                else
+                {
+                    for (label a = 0; a < S; ++a)
+                    {
+                        v4d* lo = reinterpret_cast<v4d*>(r + W*a);
+                        *lo += wx[a]*(wyz*Alo[a] + Rlo);
                     }
                 }
             }
@@ -907,13 +941,9 @@ void Foam::materialPointSoil::g2pPoints(const scalar dt)
     const bool apic = (transfer_ == transferType::APIC);
     const bool parallel = Pstream::parRun();
     const scalar alpha = flipRatio_;
-    padVelocities(gridVelocity_, velocity4_);
-    if constexpr (Flip)
-    {
-        padVelocities(gridVelocityOld_, velocityOld4_);
-    }
-    const double* vel = velocity4_.cdata();
-    const double* velOld = Flip ? velocityOld4_.cdata() : nullptr;
+    const double* vel = padVelocities(gridVelocity_, velocity4_);
+    const double* velOld =
+        Flip ? padVelocities(gridVelocityOld_, velocityOld4_) : nullptr;
     symmTensor* dStrain = strainIncrement_.data();
     leavingPoint_.clear();
     leavingProc_.clear();
@@ -989,7 +1019,7 @@ void Foam::materialPointSoil::stressPoints
     const label sy = lattice_.stride().y();
     const label sz = lattice_.stride().z();
 
-    padVelocities(vel, velocity4_);
+    const double* vel4 = padVelocities(vel, velocity4_);
     symmTensor* dStrain = strainIncrement_.data();
     const label nPoints = points_.size();
     for (label start = 0; start < nPoints; start += pointBlock)
@@ -1004,7 +1034,7 @@ void Foam::materialPointSoil::stressPoints
             (
                 sw,
                 lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
-                sy, sz, velocity4_.cdata(), nullptr, vPic, dv, Lx, Ly, Lz
+                sy, sz, vel4, nullptr, vPic, dv, Lx, Ly, Lz
             );
             const tensor L
             (
