@@ -152,9 +152,23 @@ int main(int argc, char *argv[])
         }
     }
 
-    // The regions
-    const PtrList<entry> regionEntries(dict.lookup("regions"));
+    // The regions. Read from the list they are nameless blocks: each takes
+    // the scoped name of the file and keyword (setMaterialPointsDict.regions.
+    // <name>), so that an error names where to look
+    PtrList<entry> regionEntries(dict.lookup("regions"));
     const label nRegions = regionEntries.size();
+    forAll(regionEntries, r)
+    {
+        if (!regionEntries[r].isDict())
+        {
+            FatalIOErrorInFunction(dict)
+                << "regions: entry " << regionEntries[r].keyword() << " is not"
+                << " a dictionary: give each region as name { type ...;"
+                << " material ...; }" << exit(FatalIOError);
+        }
+        regionEntries[r].dict().name() =
+            dict.objectPath() + ".regions." + regionEntries[r].keyword();
+    }
     if (!nRegions)
     {
         FatalIOErrorInFunction(dict)
