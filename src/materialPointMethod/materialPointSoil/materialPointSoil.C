@@ -674,6 +674,36 @@ inline void supportSums
     }
 }
 
+//- The velocity gradient L = sum v_n gradN/dx of a point with weights sw,
+//  and its sums vPic and (FLIP) dv, from supportSums
+template<Foam::label S, Foam::label D, bool Flip>
+inline Foam::tensor velocityGradient
+(
+    const Foam::shapeWeights& sw,
+    const Foam::latticeMesh& lattice,
+    const Foam::scalar invDx,
+    const double* __restrict__ vel4,
+    const double* __restrict__ velOld4,
+    Foam::vector& vPic,
+    Foam::vector& dv
+)
+{
+    Foam::vector Lx, Ly, Lz;
+    supportSums<S, D, Flip>
+    (
+        sw,
+        lattice.node(sw.first.x(), sw.first.y(), sw.first.z()),
+        lattice.stride().y(), lattice.stride().z(),
+        vel4, velOld4, vPic, dv, Lx, Ly, Lz
+    );
+    return Foam::tensor
+    (
+        invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
+        invDx*Lx.y(), invDx*Ly.y(), invDx*Lz.y(),
+        invDx*Lx.z(), invDx*Ly.z(), invDx*Lz.z()
+    );
+}
+
 //- Node velocities padded to four doubles per node, from the first cache
 //  line boundary of vel4 on (returned)
 inline const double* padVelocities
@@ -935,8 +965,6 @@ void Foam::materialPointSoil::g2pPoints(const scalar dt)
     // points, each followed by its constitutive update (USL)
     constexpr label S = Shape::supportSize;
     const scalar invDx = 1.0/lattice_.dx();
-    const label sy = lattice_.stride().y();
-    const label sz = lattice_.stride().z();
     const bool stressHere = (update_ == updateType::USL);
     const bool apic = (transfer_ == transferType::APIC);
     const bool parallel = Pstream::parRun();
@@ -956,18 +984,13 @@ void Foam::materialPointSoil::g2pPoints(const scalar dt)
         {
             shapeWeights sw;
             pointWeights<Shape, D>(p, latticeCoordinates(points_.x[p]), sw);
-            vector vPic(Zero), dv(Zero), Lx(Zero), Ly(Zero), Lz(Zero);
-            supportSums<S, D, Flip>
-            (
-                sw,
-                lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
-                sy, sz, vel, velOld, vPic, dv, Lx, Ly, Lz
-            );
+            vector vPic, dv(Zero);
             const tensor L
             (
-                invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
-                invDx*Lx.y(), invDx*Ly.y(), invDx*Lz.y(),
-                invDx*Lx.z(), invDx*Ly.z(), invDx*Lz.z()
+                velocityGradient<S, D, Flip>
+                (
+                    sw, lattice_, invDx, vel, velOld, vPic, dv
+                )
             );
 
             if constexpr (Flip)
@@ -1016,9 +1039,6 @@ void Foam::materialPointSoil::stressPoints
 {
     constexpr label S = Shape::supportSize;
     const scalar invDx = 1.0/lattice_.dx();
-    const label sy = lattice_.stride().y();
-    const label sz = lattice_.stride().z();
-
     const double* vel4 = padVelocities(vel, velocity4_);
     symmTensor* dStrain = strainIncrement_.data();
     const label nPoints = points_.size();
@@ -1029,20 +1049,17 @@ void Foam::materialPointSoil::stressPoints
         {
             shapeWeights sw;
             pointWeights<Shape, D>(p, latticeCoordinates(points_.x[p]), sw);
-            vector vPic(Zero), dv(Zero), Lx(Zero), Ly(Zero), Lz(Zero);
-            supportSums<S, D, false>
+            vector vPic, dv(Zero);
+            updatePointStress
             (
-                sw,
-                lattice_.node(sw.first.x(), sw.first.y(), sw.first.z()),
-                sy, sz, vel4, nullptr, vPic, dv, Lx, Ly, Lz
+                p,
+                velocityGradient<S, D, false>
+                (
+                    sw, lattice_, invDx, vel4, nullptr, vPic, dv
+                ),
+                dt,
+                dStrain[p - start]
             );
-            const tensor L
-            (
-                invDx*Lx.x(), invDx*Ly.x(), invDx*Lz.x(),
-                invDx*Lx.y(), invDx*Ly.y(), invDx*Lz.y(),
-                invDx*Lx.z(), invDx*Ly.z(), invDx*Lz.z()
-            );
-            updatePointStress(p, L, dt, dStrain[p - start]);
         }
         updateConstitutive(start, end);
     }
