@@ -498,13 +498,52 @@ inline void Foam::materialPointSoil::pointWeights
 }
 
 
+namespace
+{
+//- Bounds of a point's volume over its initial volume (det F): beyond a
+//  thousandfold squeeze or stretch (or inverted) a point is a run gone
+//  unstable, not soil, and the run stops before its deformation gradient
+//  overflows
+constexpr Foam::scalar minVolumeRatio = 1e-3;
+constexpr Foam::scalar maxVolumeRatio = 1e3;
+
+} // End anonymous namespace
+
+
+void Foam::materialPointSoil::volumeRunaway
+(
+    const label p,
+    const scalar J
+) const
+{
+    FatalErrorInFunction
+        << "The soil went unstable at time " << mesh_.time().timeName()
+        << " s: material point " << points_.id[p] << " (origId) at "
+        << points_.x[p] << " has " << J << " times its initial volume"
+        << " (det F; allowed: " << minVolumeRatio << " to " << maxVolumeRatio
+        << "), moving at " << mag(points_.v[p]) << " m/s." << nl
+        << "    Its deformation gradient runs away: lower CFL in"
+        << " constant/soilProperties (now " << CFL_ << "), use a smoother"
+        << " shapeFunction than " << shape_->type() << " (quadraticBSpline or"
+        << " GIMP: with linear shape functions a point crossing a cell face"
+        << " at speed makes its velocity gradient jump), or check the loads"
+        << " the couplings put on the soil. Nothing of this step was written."
+        << exit(FatalError);
+}
+
+
 inline void Foam::materialPointSoil::updateVolume(const label p)
 {
     // The grains are incompressible: the solid volume (1 - n) V of a point
     // is kept as it dilates or compacts, so its porosity n changes (a
     // point never holds more grains than its volume)
     const scalar Vold = points_.V[p];
-    points_.V[p] = det(points_.F[p])*points_.V0[p];
+    const scalar J = det(points_.F[p]);
+    if (!(J > minVolumeRatio && J < maxVolumeRatio))
+    {
+        volumeRunaway(p, J);
+    }
+    points_.V[p] = J*points_.V0[p];
     points_.porosity[p] =
         max(1 - (1 - points_.porosity[p])*Vold/points_.V[p], 0.0);
 }
