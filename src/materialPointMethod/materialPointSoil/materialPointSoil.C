@@ -420,7 +420,7 @@ Foam::scalar Foam::materialPointSoil::stableDt() const
             << points_.x[fastest] << " moves at " << std::sqrt(vmax)
             << " m/s, above " << maxSpeed_ << " m/s (ten times the largest"
             << " p-wave speed of the materials)." << nl
-            << "    Lower CFL in constant/soilProperties (now " << CFL_
+            << "    Lower soilCFL in system/controlDict (now " << CFL_
             << "), or check the loads the couplings put on the soil."
             << " Nothing of this step was written." << exit(FatalError);
     }
@@ -522,12 +522,18 @@ void Foam::materialPointSoil::volumeRunaway
         << points_.x[p] << " has " << J << " times its initial volume"
         << " (det F; allowed: " << minVolumeRatio << " to " << maxVolumeRatio
         << "), moving at " << mag(points_.v[p]) << " m/s." << nl
-        << "    Its deformation gradient runs away: lower CFL in"
-        << " constant/soilProperties (now " << CFL_ << "), use a smoother"
-        << " shapeFunction than " << shape_->type() << " (quadraticBSpline or"
-        << " GIMP: with linear shape functions a point crossing a cell face"
-        << " at speed makes its velocity gradient jump), or check the loads"
-        << " the couplings put on the soil. Nothing of this step was written."
+        << "    Its deformation gradient runs away: lower soilCFL in"
+        << " system/controlDict (now " << CFL_ << "), "
+        << (
+               shape_->type() == "linear"
+             ? "use a smoother shapeFunction than linear (quadraticBSpline"
+               " or GIMP: with linear shape functions a point crossing a"
+               " cell face at speed makes its velocity gradient jump), "
+             : ""
+           )
+        << "or check the loads the couplings put on the soil (an impact"
+        << " this fast splashes the points apart). Nothing of this step was"
+        << " written."
         << exit(FatalError);
 }
 
@@ -1050,10 +1056,16 @@ void Foam::materialPointSoil::g2pPoints(const scalar dt)
                 updatePointStress(p, L, dt, dStrain[p - start]);
             }
 
+            const vector xOld(points_.x[p]);
             points_.x[p] += dt*vPic;
-            if (clamp(points_.x[p]))
+            if (clamp(points_.x[p], xOld))
             {
-                ++nClamped_;
+                if (nClamped_++ == 0)
+                {
+                    firstClamped_ = points_.id[p];
+                    firstClampedAt_ = points_.x[p];
+                    firstClampedSpeed_ = mag(vPic);
+                }
             }
             if (parallel)
             {
@@ -1322,14 +1334,15 @@ void Foam::materialPointSoil::updateStresses
 }
 
 
-bool Foam::materialPointSoil::clamp(vector& x) const
+bool Foam::materialPointSoil::clamp(vector& x, const vector& xOld) const
 {
     const scalar dx = lattice_.dx();
     const vector& o = lattice_.origin();
     const labelVector& N = lattice_.globalN();
+    const direction nDir = lattice_.twoD() ? 2 : 3;
     const scalar eps = 1e-6*dx;
     bool moved = false;
-    for (direction d = 0; d < (lattice_.twoD() ? 2 : 3); ++d)
+    for (direction d = 0; d < nDir; ++d)
     {
         const scalar lo = o[d] + eps;
         const scalar hi = o[d] + N[d]*dx - eps;
@@ -1344,7 +1357,78 @@ bool Foam::materialPointSoil::clamp(vector& x) const
             moved = true;
         }
     }
-    return moved;
+    if (!hasMissingCells_)
+    {
+        return moved;
+    }
+
+    // A missing cell of the box (a stepped or L-shaped mesh): stop the
+    // point at the face it crossed into it. It moves less than a cell per
+    // sub-step, so it crossed at most one face per axis: first the faces
+    // whose neighbour across is missing, then, if only the diagonal cell is
+    // missing (a convex corner), the face it overshot least.
+    if (isDomainCell(x))
+    {
+        return moved;
+    }
+    labelVector cOld(Zero), cNew(Zero);
+    for (direction d = 0; d < nDir; ++d)
+    {
+        cOld[d] = label(std::floor((xOld[d] - o[d])/dx));
+        cNew[d] = label(std::floor((x[d] - o[d])/dx));
+    }
+    auto stopAt = [&](const direction d)
+    {
+        // The face between the old and the new cell along d
+        const scalar face = o[d] + max(cOld[d], cNew[d])*dx;
+        x[d] = (cNew[d] > cOld[d]) ? face - eps : face + eps;
+        cNew[d] = cOld[d];
+    };
+    for (direction d = 0; d < nDir; ++d)
+    {
+        if (cNew[d] != cOld[d])
+        {
+            vector across(xOld);
+            across[d] = x[d];
+            if (!isDomainCell(across))
+            {
+                stopAt(d);
+            }
+        }
+    }
+    if (!isDomainCell(x))
+    {
+        direction best = 0;
+        scalar least = GREAT;
+        for (direction d = 0; d < nDir; ++d)
+        {
+            if (cNew[d] != cOld[d])
+            {
+                const scalar face = o[d] + max(cOld[d], cNew[d])*dx;
+                if (mag(x[d] - face) < least)
+                {
+                    least = mag(x[d] - face);
+                    best = d;
+                }
+            }
+        }
+        stopAt(best);
+    }
+    return true;
+}
+
+
+bool Foam::materialPointSoil::isDomainCell(const vector& x) const
+{
+    const label n = cellNodeOf(x);
+    // (beyond this processor's box: its owner judges it; the migration
+    // check stops a point that jumps that far)
+    if (n < 0)
+    {
+        return true;
+    }
+    const unsigned char k = lattice_.kind()[n];
+    return k == latticeMesh::OWNED || k == latticeMesh::HALO;
 }
 
 
@@ -1383,7 +1467,7 @@ inline void Foam::materialPointSoil::noteLeaving(const label p)
             << Pstream::myProcNo() << " in one sub-step at time "
             << mesh_.time().timeName() << " s" << nl
             << "    A point must move less than a cell per sub-step:"
-            << " lower the CFL of constant/soilProperties"
+            << " lower soilCFL in system/controlDict"
             << exit(FatalError);
     }
     const label owner = nodeOwner_[n];
@@ -1558,7 +1642,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
             updateTypeNames, "updateScheme", dict_, true, updateType::USL
         )
     ),
-    CFL_(dict_.getOrDefault<scalar>("CFL", 0.5)),
+    CFL_(readCFL()),
     gravity_(dict_.getOrDefault<vector>("gravity", Zero)),
     gravityRamp_(dict_.getOrDefault<scalar>("gravityRamp", 0)),
     localDamping_(dict_.getOrDefault<scalar>("localDamping", 0)),
@@ -1570,7 +1654,15 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
         lattice.periodic()[0] || lattice.periodic()[1] || lattice.periodic()[2]
     ),
     hasPointForces_(false),
+    hasMissingCells_
+    (
+        returnReduce(mesh_.nCells(), sumOp<label>())
+      < lattice.globalN().x()*lattice.globalN().y()*lattice.globalN().z()
+    ),
     nClamped_(0),
+    firstClamped_(-1),
+    firstClampedAt_(Zero),
+    firstClampedSpeed_(0),
     nSubSteps_(0),
     subDt_(0),
     nTotalSubSteps_(0),
@@ -1583,11 +1675,14 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
             << " the reach " << shape_->reach() << " of shape function "
             << shape_->type() << abort(FatalError);
     }
-    if (!(CFL_ > 0 && CFL_ <= 1))
+    if (dict_.found("CFL"))
     {
+        // The time step is controlDict's business, with deltaT and maxCo:
+        // a CFL left here would be silently ignored
         FatalIOErrorInFunction(dict_)
-            << "CFL " << CFL_ << " is not allowed: it must lie in (0, 1]"
-            << exit(FatalIOError);
+            << "CFL is not read from constant/soilProperties: the soil's"
+            << " Courant number is soilCFL in system/controlDict (a value"
+            << " in (0, 1], default 0.5)" << exit(FatalIOError);
     }
     if (!(gravityRamp_ >= 0))
     {
@@ -1697,8 +1792,26 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::materialPointSoil::readCFL() const
+{
+    // Read at every outer step, so an edit of a running case's controlDict
+    // (runTimeModifiable) takes effect, as maxCo does for OpenFOAM's solvers
+    const dictionary& control = mesh_.time().controlDict();
+    const scalar CFL = control.getOrDefault<scalar>("soilCFL", 0.5);
+    if (!(CFL > 0 && CFL <= 1))
+    {
+        FatalIOErrorInFunction(control)
+            << "soilCFL " << CFL << " is not allowed: it must lie in (0, 1]"
+            << " (the soil's sub-step over dx/(c_p + |v|))"
+            << exit(FatalIOError);
+    }
+    return CFL;
+}
+
+
 void Foam::materialPointSoil::advance(const scalar deltaT)
 {
+    CFL_ = readCFL();
     const scalar dtStable = stableDt();
     nSubSteps_ = max(label(std::ceil(deltaT/dtStable - 1e-9)), label(1));
     subDt_ = deltaT/nSubSteps_;
@@ -1713,10 +1826,28 @@ void Foam::materialPointSoil::advance(const scalar deltaT)
     const label nClamped = returnReduce(nClamped_, sumOp<label>());
     if (nClamped)
     {
+        // The first point held, of the lowest processor that held any
+        const label proc = returnReduce
+        (
+            nClamped_ ? Pstream::myProcNo() : Pstream::nProcs(),
+            minOp<label>()
+        );
+        const bool mine = (proc == Pstream::myProcNo());
+        const label id =
+            returnReduce(mine ? firstClamped_ : label(0), sumOp<label>());
+        const vector at =
+            returnReduce(mine ? firstClampedAt_ : vector::zero, sumOp<vector>());
+        const scalar speed =
+            returnReduce(mine ? firstClampedSpeed_ : scalar(0), sumOp<scalar>());
         WarningInFunction
             << nClamped << " material point moves out of the domain were"
-            << " stopped at the boundary at time " << mesh_.time().timeName()
-            << " s" << endl;
+            << " stopped at its boundary (a wall or the face of a missing"
+            << " cell) at time " << mesh_.time().timeName() << " s, the"
+            << " first by point " << id << " (origId) at " << at
+            << ", moving at " << speed << " m/s" << nl
+            << "    The points hit the boundary faster than the grid stops"
+            << " them: lower soilCFL in system/controlDict (now " << CFL_
+            << ") or check the loads on the soil" << endl;
     }
     nClamped_ = 0;
 }

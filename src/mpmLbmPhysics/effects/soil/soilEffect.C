@@ -76,7 +76,7 @@ Foam::string Foam::physicsEffects::soil::plan() const
     return
         Foam::name(n) + " sub-steps of " + Foam::name(deltaT/n)
       + " s per step at the start (stable step " + Foam::name(dt)
-      + " s = CFL " + Foam::name(mpm_.CFL()) + " dx/(c_p + |v|), c_p "
+      + " s = soilCFL " + Foam::name(mpm_.CFL()) + " dx/(c_p + |v|), c_p "
       + Foam::name(mpm_.pWaveSpeed()) + " m/s); re-planned every step";
 }
 
