@@ -200,6 +200,92 @@ void Foam::materialPointSoil::buildGhosts()
         }
     }
 
+    // The node at global cell indices c if it is a cell of the mesh in this
+    // box, else -1
+    auto domainNode = [&](const labelVector& c) -> label
+    {
+        const labelVector b = c - bs;
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (b[d] < 0 || b[d] >= bn[d])
+            {
+                return -1;
+            }
+        }
+        const label m = lattice_.node(b.x(), b.y(), b.z());
+        return
+            (kind[m] == latticeMesh::OWNED || kind[m] == latticeMesh::HALO)
+          ? m : -1;
+    };
+
+    // The image of node n (global indices g) of a missing cell: across the
+    // face of the nearest cell of the mesh along an axis, within the shape
+    // function's reach, with that face's wall condition (sign s as at the
+    // box's walls). None (-1) where two faces are equally near (the corner
+    // of a step) or the mesh beyond the face is too thin for the image.
+    const label reach = shape_->reach();
+    auto missingCellImage = [&](const labelVector& g, vector& s) -> label
+    {
+        label nearest = reach + 1, image = -1;
+        bool tie = false;
+        for (direction d = 0; d < (lattice_.twoD() ? 2 : 3); ++d)
+        for (label side = 0; side < 2; ++side)
+        {
+            const label step = side ? 1 : -1;
+            for (label k = 1; k <= min(reach, nearest); ++k)
+            {
+                labelVector c(g);
+                c[d] += step*k;
+                // (beyond the mesh's box or this processor's box: no face
+                // this way; a node that far from the owned cells is out of
+                // the points' reach in parallel)
+                if
+                (
+                    c[d] < 0 || c[d] >= N[d]
+                 || c[d] - bs[d] < 0 || c[d] - bs[d] >= bn[d]
+                )
+                {
+                    break;
+                }
+                const label cn = domainNode(c);
+                if (cn < 0)
+                {
+                    continue;
+                }
+                // c is the first cell of the mesh: the face is on its side
+                // towards n; the image of n lies as far inside
+                labelVector m(g);
+                m[d] += step*(2*k - 1);
+                const label mn =
+                    (m[d] >= 0 && m[d] < N[d]) ? domainNode(m) : -1;
+                if (k == nearest)
+                {
+                    tie = true;
+                }
+                else
+                {
+                    nearest = k;
+                    tie = false;
+                    image = mn;
+                    const label patchi = sidePatch[2*d + (side ? 0 : 1)][cn];
+                    const wallType wt =
+                        patchi >= 0 ? patchWall_[patchi] : wallType::noSlip;
+                    s = vector::one;
+                    if (wt == wallType::noSlip)
+                    {
+                        s = -s;
+                    }
+                    else if (wt == wallType::slip)
+                    {
+                        s[d] = -1;
+                    }
+                }
+                break;
+            }
+        }
+        return tie ? -1 : image;
+    };
+
     DynamicList<label> ghost, source;
     DynamicList<vector> sign;
 
@@ -268,7 +354,12 @@ void Foam::materialPointSoil::buildGhosts()
             }
         }
 
-        if (src >= 0)
+        if (!reflected)
+        {
+            // A node of a missing cell inside the box (a stepped mesh)
+            src = missingCellImage(g, s);
+        }
+        else if (src >= 0)
         {
             // The wall type of each reflection: from the boundary face of
             // the cell next to that wall on that axis
@@ -299,9 +390,10 @@ void Foam::materialPointSoil::buildGhosts()
                 }
             }
         }
-        else
+        if (src < 0)
         {
-            // A missing cell (or beyond reach): at rest
+            // No image (beyond a missing cell, or a corner of missing cells
+            // with two faces equally near): at rest
             s = Zero;
             src = n;
         }
