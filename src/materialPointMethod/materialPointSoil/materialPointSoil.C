@@ -200,9 +200,9 @@ void Foam::materialPointSoil::buildGhosts()
         }
     }
 
-    // The node at global cell indices c if it is a cell of the mesh in this
-    // box, else -1
-    auto domainNode = [&](const labelVector& c) -> label
+    // The kind of the node at global cell indices c of this box (-1 beyond
+    // the box) and the node itself
+    auto boxKind = [&](const labelVector& c, label& m) -> label
     {
         const labelVector b = c - bs;
         for (direction d = 0; d < 3; ++d)
@@ -212,21 +212,26 @@ void Foam::materialPointSoil::buildGhosts()
                 return -1;
             }
         }
-        const label m = lattice_.node(b.x(), b.y(), b.z());
-        return
-            (kind[m] == latticeMesh::OWNED || kind[m] == latticeMesh::HALO)
-          ? m : -1;
+        m = lattice_.node(b.x(), b.y(), b.z());
+        return kind[m];
+    };
+    auto isLocal = [](const label k)
+    {
+        return k == latticeMesh::OWNED || k == latticeMesh::HALO;
     };
 
-    // The image of node n (global indices g) of a missing cell: across the
-    // face of the nearest cell of the mesh along an axis, within the shape
-    // function's reach, with that face's wall condition (sign s as at the
-    // box's walls). None (-1) where two faces are equally near (the corner
-    // of a step) or the mesh beyond the face is too thin for the image.
+    // The image of the node (global indices g) of a missing cell: across
+    // the face of the nearest cell of the mesh along an axis, within the
+    // shape function's reach, with that face's wall condition (sign s as at
+    // the box's walls). None (-1) where two faces are equally near (the
+    // corner of a step) or the mesh beyond the face is too thin for the
+    // image. Undetermined here (-2) where the nearest face or the image
+    // lies beyond this processor's box or halo (a cell another processor
+    // owns, not in the halo: UNUSED).
     const label reach = shape_->reach();
     auto missingCellImage = [&](const labelVector& g, vector& s) -> label
     {
-        label nearest = reach + 1, image = -1;
+        label nearest = reach + 1, image = -1, unknownFrom = reach + 1;
         bool tie = false;
         for (direction d = 0; d < (lattice_.twoD() ? 2 : 3); ++d)
         for (label side = 0; side < 2; ++side)
@@ -236,54 +241,79 @@ void Foam::materialPointSoil::buildGhosts()
             {
                 labelVector c(g);
                 c[d] += step*k;
-                // (beyond the mesh's box or this processor's box: no face
-                // this way; a node that far from the owned cells is out of
-                // the points' reach in parallel)
-                if
-                (
-                    c[d] < 0 || c[d] >= N[d]
-                 || c[d] - bs[d] < 0 || c[d] - bs[d] >= bn[d]
-                )
+                if (c[d] < 0 || c[d] >= N[d])
                 {
                     break;
                 }
-                const label cn = domainNode(c);
-                if (cn < 0)
+                label cn = -1;
+                const label ck = boxKind(c, cn);
+                if (ck < 0)
+                {
+                    unknownFrom = min(unknownFrom, k);
+                    break;
+                }
+                if (ck == latticeMesh::WALL)
                 {
                     continue;
                 }
                 // c is the first cell of the mesh: the face is on its side
-                // towards n; the image of n lies as far inside
-                labelVector m(g);
-                m[d] += step*(2*k - 1);
-                const label mn =
-                    (m[d] >= 0 && m[d] < N[d]) ? domainNode(m) : -1;
+                // towards the node; the image lies as far inside
                 if (k == nearest)
                 {
                     tie = true;
+                    break;
                 }
-                else
+                nearest = k;
+                tie = false;
+                labelVector m(g);
+                m[d] += step*(2*k - 1);
+                label mn = -1;
+                const label mk =
+                    (m[d] >= 0 && m[d] < N[d])
+                  ? boxKind(m, mn) : label(latticeMesh::WALL);
+                if (!isLocal(ck) || (mk != latticeMesh::WALL && !isLocal(mk)))
                 {
-                    nearest = k;
-                    tie = false;
-                    image = mn;
-                    const label patchi = sidePatch[2*d + (side ? 0 : 1)][cn];
-                    const wallType wt =
-                        patchi >= 0 ? patchWall_[patchi] : wallType::noSlip;
-                    s = vector::one;
-                    if (wt == wallType::noSlip)
-                    {
-                        s = -s;
-                    }
-                    else if (wt == wallType::slip)
-                    {
-                        s[d] = -1;
-                    }
+                    image = -2;
+                    break;
+                }
+                image = isLocal(mk) ? mn : -1;
+                const label patchi = sidePatch[2*d + (side ? 0 : 1)][cn];
+                const wallType wt =
+                    patchi >= 0 ? patchWall_[patchi] : wallType::noSlip;
+                s = vector::one;
+                if (wt == wallType::noSlip)
+                {
+                    s = -s;
+                }
+                else if (wt == wallType::slip)
+                {
+                    s[d] = -1;
                 }
                 break;
             }
         }
+        if (unknownFrom <= nearest)
+        {
+            return -2;
+        }
         return tie ? -1 : image;
+    };
+
+    // Could a point of this processor reach the node (global indices g)?
+    auto inReach = [&](const labelVector& g)
+    {
+        const label rz = lattice_.twoD() ? 0 : reach;
+        for (label i = -reach; i <= reach; ++i)
+        for (label j = -reach; j <= reach; ++j)
+        for (label k = -rz; k <= rz; ++k)
+        {
+            label m = -1;
+            if (boxKind(g + labelVector(i, j, k), m) == latticeMesh::OWNED)
+            {
+                return true;
+            }
+        }
+        return false;
     };
 
     DynamicList<label> ghost, source;
@@ -358,6 +388,21 @@ void Foam::materialPointSoil::buildGhosts()
         {
             // A node of a missing cell inside the box (a stepped mesh)
             src = missingCellImage(g, s);
+            if (src == -2 && inReach(g))
+            {
+                FatalErrorInFunction
+                    << "The node of missing cell " << g << " (global cell"
+                    << " indices) is within reach of this processor's points"
+                    << " but the mesh face it mirrors across, or its image,"
+                    << " lies beyond processor " << Pstream::myProcNo()
+                    << "'s halo (" << lattice_.haloWidth() << " cells) for "
+                    << shape_->type() << " (reach " << reach << ")." << nl
+                    << "    Use a shape function of reach 1 (linear, GIMP,"
+                    << " quadraticBSpline) on this mesh with missing cells,"
+                    << " or decompose it so that no processor boundary runs"
+                    << " within " << 3*reach << " cells of a missing cell."
+                    << exit(FatalError);
+            }
         }
         else if (src >= 0)
         {
@@ -1457,8 +1502,7 @@ bool Foam::materialPointSoil::clamp(vector& x, const vector& xOld) const
     // A missing cell of the box (a stepped or L-shaped mesh): stop the
     // point at the face it crossed into it. It moves less than a cell per
     // sub-step, so it crossed at most one face per axis: first the faces
-    // whose neighbour across is missing, then, if only the diagonal cell is
-    // missing (a convex corner), the face it overshot least.
+    // whose neighbour across is missing, then as below.
     if (isDomainCell(x))
     {
         return moved;
@@ -1488,7 +1532,10 @@ bool Foam::materialPointSoil::clamp(vector& x, const vector& xOld) const
             }
         }
     }
-    if (!isDomainCell(x))
+    // Only a diagonal cell missing (a convex corner of the missing cells):
+    // stop the crossing it overshot least, then the next, until the point
+    // is in a cell of the mesh (at the latest in its old cell)
+    while (!isDomainCell(x))
     {
         direction best = 0;
         scalar least = GREAT;
@@ -1503,6 +1550,12 @@ bool Foam::materialPointSoil::clamp(vector& x, const vector& xOld) const
                     best = d;
                 }
             }
+        }
+        if (least == GREAT)
+        {
+            // (the old cell itself is missing: cannot happen for points
+            // seeded in the mesh and kept out since)
+            break;
         }
         stopAt(best);
     }
@@ -1883,6 +1936,35 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::materialPointSoil::haloWidth(const fvMesh& mesh)
+{
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            "soilProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    const label reach = shapeFunction::New(dict)->reach();
+
+    // Missing cells: fewer cells than the bounding box holds (the mesh is
+    // uniform; latticeMesh checks that)
+    const label nCells = returnReduce(mesh.nCells(), sumOp<label>());
+    const scalar cellVolume =
+        returnReduce(mesh.nCells() ? mesh.V()[0] : scalar(0), maxOp<scalar>());
+    const boundBox bb(mesh.points(), true);
+    const bool missing =
+        cellVolume > 0 && nCells + 0.5 < bb.volume()/cellVolume;
+
+    return max(label(2), missing ? 3*reach - 1 : reach);
+}
+
 
 Foam::scalar Foam::materialPointSoil::readCFL() const
 {

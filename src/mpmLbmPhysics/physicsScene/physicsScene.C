@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "physicsScene.H"
+#include "materialPointSoil.H"
 #include "Time.H"
 #include <algorithm>
 
@@ -147,8 +148,9 @@ Foam::physicsScene::physicsScene(fvMesh& mesh)
     Info<< "Scene effects: " << names_ << nl << endl;
 
     // The soil's shape functions reach up to 2 nodes beyond a point's cell
-    // (cubic B-splines): the shared lattice is built wide enough for both
-    lattice(has("soil") ? 2 : 1);
+    // (cubic B-splines), and the images of missing cells' nodes further:
+    // the shared lattice is built wide enough for both
+    lattice(has("soil") ? materialPointSoil::haloWidth(mesh_) : 1);
 
     // The water and the soil first: the couplings use them
     effects_.setSize(names_.size());

@@ -24,7 +24,7 @@
 #         <rms stress error> <max stress error> <settlement error against
 #         rho g H^2/(2M)> <lateral ratio error> <rms stress error away from
 #         the ends> <mean |stress error|> <settlement error against the
-#         finite-strain solution>
+#         finite-strain solution, signed: + for too much settlement>
 #     stress errors relative to rho g H, the others relative. The mean
 #     |stress error| over the points (all of one volume) is the normalised
 #     error sum_p |sigma_p - sigma_a(y0_p)| V_p/(rho g H V) that Coombs &
@@ -62,4 +62,4 @@ print('%.6e %.6e %.6e %.6e %.6e %.6e %.6e' % (
       np.sqrt(np.mean(err ** 2)), np.abs(err).max(),
       abs(settle / settleSmall - 1), abs(ratio / (nu / (1 - nu)) - 1),
       np.sqrt(np.mean(err[inner] ** 2)), np.mean(np.abs(err)),
-      abs(settle / settleFinite - 1)))
+      settle / settleFinite - 1))

@@ -15,7 +15,8 @@
 #         settlement: int_0^y0 (exp(sigma_yy/M_i) - 1) dY (the rate model's
 #         stretch, as checkColumn.py), in closed form layer by layer
 #     Prints
-#         <mean |stress error|> <settlement error> <sand ratio error>
+#         <mean |stress error|> <settlement error (signed: + for too much
+#         settlement)> <sand ratio error>
 #         <clay ratio error> <largest plastic strain> <1 if every point
 #         below y0 = 5 m has one material and every point above the other,
 #         else 0>
@@ -75,5 +76,5 @@ below, above = mat[y0 < Hs], mat[y0 > Hs]
 layered = (np.all(below == below[0]) and np.all(above == above[0])
            and below[0] != above[0])
 print('%.6e %.6e %.6e %.6e %.6e %d' % (
-      np.mean(np.abs(err)), abs(settle / exact - 1), ratios[0], ratios[1],
+      np.mean(np.abs(err)), settle / exact - 1, ratios[0], ratios[1],
       np.abs(ep).max(), int(layered)))
