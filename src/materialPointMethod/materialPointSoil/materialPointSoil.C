@@ -200,6 +200,25 @@ void Foam::materialPointSoil::buildGhosts()
         }
     }
 
+    // Compose into s the mirror across a wall normal to axis d of patch
+    // patchi (-1: no face known, taken as noSlip): a slip wall reverses the
+    // normal component, a noSlip wall every component. Beyond a friction
+    // wall the node copies the node inside, which thereby carries the whole
+    // load on the wall and meets it through the Coulomb contact
+    auto mirror = [&](const label patchi, const direction d, vector& s)
+    {
+        const wallType wt =
+            patchi >= 0 ? patchWall_[patchi] : wallType::noSlip;
+        if (wt == wallType::noSlip)
+        {
+            s = -s;
+        }
+        else if (wt == wallType::slip)
+        {
+            s[d] = -s[d];
+        }
+    };
+
     // The kind of the node at global cell indices c of this box (-1 beyond
     // the box) and the node itself
     auto boxKind = [&](const labelVector& c, label& m) -> label
@@ -277,18 +296,8 @@ void Foam::materialPointSoil::buildGhosts()
                     break;
                 }
                 image = isLocal(mk) ? mn : -1;
-                const label patchi = sidePatch[2*d + (side ? 0 : 1)][cn];
-                const wallType wt =
-                    patchi >= 0 ? patchWall_[patchi] : wallType::noSlip;
                 s = vector::one;
-                if (wt == wallType::noSlip)
-                {
-                    s = -s;
-                }
-                else if (wt == wallType::slip)
-                {
-                    s[d] = -1;
-                }
+                mirror(sidePatch[2*d + (side ? 0 : 1)][cn], d, s);
                 break;
             }
         }
@@ -417,22 +426,7 @@ void Foam::materialPointSoil::buildGhosts()
                 const labelVector cb = c - bs;
                 const label cn = lattice_.node(cb.x(), cb.y(), cb.z());
                 const label dir = 2*d + side;
-                const label patchi = sidePatch[dir][cn];
-                const wallType wt =
-                    patchi >= 0 ? patchWall_[patchi] : wallType::noSlip;
-                // Mirrors compose: a slip wall reverses the normal
-                // component, a noSlip wall every component. Beyond a
-                // friction wall the node copies the last node inside, which
-                // thereby carries the whole load on the wall and meets it
-                // through the Coulomb contact
-                if (wt == wallType::noSlip)
-                {
-                    s = -s;
-                }
-                else if (wt == wallType::slip)
-                {
-                    s[d] = -s[d];
-                }
+                mirror(sidePatch[dir][cn], d, s);
             }
         }
         if (src < 0)
