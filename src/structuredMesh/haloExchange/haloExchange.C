@@ -14,13 +14,217 @@ License
 #include "haloExchange.H"
 #include "PstreamBuffers.H"
 #include "DynamicList.H"
+#include "ListOps.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+// Call visit(value) for every value of the nodes of a list, node by node
+// and component by component (the order of packing and unpacking)
+template<class Type, class Visit>
+inline void forEachValue
+(
+    const haloExchange::nodeList<Type>& list,
+    const labelUList& nodes,
+    const Visit& visit
+)
+{
+    const label nc = list.nComponents;
+    Type* __restrict__ d = list.data;
+    if (nc == 1)
+    {
+        for (const label n : nodes)
+        {
+            visit(d[n]);
+        }
+    }
+    else
+    {
+        for (const label n : nodes)
+        {
+            for (label c = 0; c < nc; ++c)
+            {
+                visit(d[n*nc + c]);
+            }
+        }
+    }
+}
+
+
+// Combine the values of the nodes from[i] of a list into its nodes to[i]:
+// the periodic images on this processor
+template<class Type, class CombineOp>
+inline void combineLocal
+(
+    const haloExchange::nodeList<Type>& list,
+    const labelUList& from,
+    const labelUList& to,
+    const CombineOp& combine
+)
+{
+    const label nc = list.nComponents;
+    Type* d = list.data;
+    forAll(from, i)
+    {
+        for (label c = 0; c < nc; ++c)
+        {
+            combine(d[to[i]*nc + c], d[from[i]*nc + c]);
+        }
+    }
+}
+
+
+// Call act(list) for the lists selected for processor proci (all if
+// selection is nullptr)
+template<class Type, class Action>
+inline void forEachSelected
+(
+    const UList<haloExchange::nodeList<Type>>& lists,
+    const labelListList* selection,
+    const label proci,
+    const Action& act
+)
+{
+    if (selection)
+    {
+        for (const label i : (*selection)[proci])
+        {
+            act(lists[i]);
+        }
+    }
+    else
+    {
+        for (const haloExchange::nodeList<Type>& list : lists)
+        {
+            act(list);
+        }
+    }
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Type, class CombineOp>
+void Foam::haloExchange::transfer
+(
+    const UList<nodeList<Type>>& lists,
+    const labelListList& fromNodes,
+    const labelListList& toNodes,
+    const labelListList* fromLists,
+    const labelListList* toLists,
+    const CombineOp& combine
+) const
+{
+    const label myProc = Pstream::myProcNo();
+
+    // Periodic images on this processor: no communication, and first (a
+    // fixed order of the additions: the run repeats itself exactly)
+    forEachSelected
+    (
+        lists, toLists, myProc,
+        [&](const nodeList<Type>& list)
+        {
+            combineLocal(list, fromNodes[myProc], toNodes[myProc], combine);
+        }
+    );
+
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // Number of values per node in the message to or from proci
+    auto nValues = [&](const labelListList* selection, const label proci)
+    {
+        label n = 0;
+        forEachSelected
+        (
+            lists, selection, proci,
+            [&](const nodeList<Type>& list) { n += list.nComponents; }
+        );
+        return n;
+    };
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(fromNodes, proci)
+    {
+        const labelList& nodes = fromNodes[proci];
+        const label nv = nValues(fromLists, proci);
+        if (proci == myProc || nodes.empty() || nv == 0)
+        {
+            continue;
+        }
+        List<Type> buf(nv*nodes.size());
+        label k = 0;
+        forEachSelected
+        (
+            lists, fromLists, proci,
+            [&](const nodeList<Type>& list)
+            {
+                forEachValue
+                (
+                    list, nodes, [&](const Type& x) { buf[k++] = x; }
+                );
+            }
+        );
+        UOPstream toProc(proci, pBufs);
+        toProc << buf;
+    }
+    pBufs.finishedSends();
+
+    forAll(toNodes, proci)
+    {
+        const labelList& nodes = toNodes[proci];
+        if (proci == myProc || nodes.empty() || nValues(toLists, proci) == 0)
+        {
+            continue;
+        }
+        List<Type> buf;
+        UIPstream fromProc(proci, pBufs);
+        fromProc >> buf;
+        label k = 0;
+        forEachSelected
+        (
+            lists, toLists, proci,
+            [&](const nodeList<Type>& list)
+            {
+                forEachValue
+                (
+                    list, nodes, [&](Type& x) { combine(x, buf[k++]); }
+                );
+            }
+        );
+    }
+}
+
+
+Foam::List<Foam::haloExchange::nodeField> Foam::haloExchange::componentLists
+(
+    scalar* data,
+    const labelUList& components,
+    const label componentStride
+)
+{
+    List<nodeField> lists(components.size());
+    forAll(components, ci)
+    {
+        lists[ci] = nodeField{data + components[ci]*componentStride, 1};
+    }
+    return lists;
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::haloExchange::haloExchange()
 :
     sendNodes_(Pstream::nProcs()),
-    recvNodes_(Pstream::nProcs())
+    recvNodes_(Pstream::nProcs()),
+    nSelectable_(0)
 {}
 
 
@@ -32,7 +236,8 @@ Foam::haloExchange::haloExchange
 )
 :
     sendNodes_(Pstream::nProcs()),
-    recvNodes_(Pstream::nProcs())
+    recvNodes_(Pstream::nProcs()),
+    nSelectable_(0)
 {
     const label nProcs = Pstream::nProcs();
 
@@ -43,36 +248,15 @@ Foam::haloExchange::haloExchange
         recv[haloOwnerProc[i]].append(haloNodes[i]);
         request[haloOwnerProc[i]].append(haloOwnerNode[i]);
     }
+    labelListList requested(nProcs);
     forAll(recv, proci)
     {
         recvNodes_[proci].transfer(recv[proci]);
+        requested[proci].transfer(request[proci]);
     }
 
     // Tell each owner which of its nodes we need, in our receive order
-    const label myProc = Pstream::myProcNo();
-    sendNodes_[myProc] = request[myProc];
-
-    if (Pstream::parRun())
-    {
-        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-        for (label proci = 0; proci < nProcs; ++proci)
-        {
-            if (proci != myProc)
-            {
-                UOPstream toProc(proci, pBufs);
-                toProc << labelList(request[proci]);
-            }
-        }
-        pBufs.finishedSends();
-        for (label proci = 0; proci < nProcs; ++proci)
-        {
-            if (proci != myProc)
-            {
-                UIPstream fromProc(proci, pBufs);
-                fromProc >> sendNodes_[proci];
-            }
-        }
-    }
+    Pstream::exchange<labelList, label>(requested, sendNodes_);
 }
 
 
@@ -121,72 +305,11 @@ void Foam::haloExchange::exchange
     const label componentStride
 ) const
 {
-    const label myProc = Pstream::myProcNo();
-
-    // Periodic copies within this processor first: no communication
-    {
-        const labelList& send = sendNodes_[myProc];
-        const labelList& recv = recvNodes_[myProc];
-        forAll(components, ci)
-        {
-            scalar* __restrict__ d = data + components[ci]*componentStride;
-            forAll(send, i)
-            {
-                d[recv[i]] = d[send[i]];
-            }
-        }
-    }
-
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    const label nComp = components.size();
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-
-    forAll(sendNodes_, proci)
-    {
-        const labelList& send = sendNodes_[proci];
-        if (proci == myProc || send.empty())
-        {
-            continue;
-        }
-        scalarList buf(nComp*send.size());
-        label k = 0;
-        forAll(components, ci)
-        {
-            const scalar* d = data + components[ci]*componentStride;
-            forAll(send, i)
-            {
-                buf[k++] = d[send[i]];
-            }
-        }
-        UOPstream toProc(proci, pBufs);
-        toProc << buf;
-    }
-    pBufs.finishedSends();
-
-    forAll(recvNodes_, proci)
-    {
-        const labelList& recv = recvNodes_[proci];
-        if (proci == myProc || recv.empty())
-        {
-            continue;
-        }
-        scalarList buf;
-        UIPstream fromProc(proci, pBufs);
-        fromProc >> buf;
-        label k = 0;
-        forAll(components, ci)
-        {
-            scalar* d = data + components[ci]*componentStride;
-            forAll(recv, i)
-            {
-                d[recv[i]] = buf[k++];
-            }
-        }
-    }
+    transfer
+    (
+        componentLists(data, components, componentStride),
+        sendNodes_, recvNodes_, nullptr, nullptr, assignOp()
+    );
 }
 
 
@@ -197,40 +320,25 @@ void Foam::haloExchange::exchange
     const label componentStride
 ) const
 {
-    labelList components(nComponents);
-    forAll(components, ci)
-    {
-        components[ci] = ci;
-    }
-    exchange(data, components, componentStride);
+    exchange(data, identity(nComponents), componentStride);
 }
 
 
 void Foam::haloExchange::setComponents(const labelListList& recvComponents)
 {
-    const label myProc = Pstream::myProcNo();
     recvComponents_ = recvComponents;
-    sendComponents_.setSize(Pstream::nProcs());
-    sendComponents_[myProc] = recvComponents_[myProc];
 
-    if (Pstream::parRun())
+    // Tell each processor which components we need from it
+    Pstream::exchange<labelList, label>(recvComponents_, sendComponents_);
+
+    nSelectable_ = 0;
+    for (const labelListList* comps : {&recvComponents_, &sendComponents_})
     {
-        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-        forAll(recvComponents_, proci)
+        for (const labelList& c : *comps)
         {
-            if (proci != myProc)
+            for (const label ci : c)
             {
-                UOPstream toProc(proci, pBufs);
-                toProc << recvComponents_[proci];
-            }
-        }
-        pBufs.finishedSends();
-        forAll(sendComponents_, proci)
-        {
-            if (proci != myProc)
-            {
-                UIPstream fromProc(proci, pBufs);
-                fromProc >> sendComponents_[proci];
+                nSelectable_ = max(nSelectable_, ci + 1);
             }
         }
     }
@@ -243,116 +351,22 @@ void Foam::haloExchange::exchangeSelected
     const label componentStride
 ) const
 {
-    const label myProc = Pstream::myProcNo();
-
-    // Periodic copies within this processor
-    {
-        const labelList& send = sendNodes_[myProc];
-        const labelList& recv = recvNodes_[myProc];
-        for (const label c : recvComponents_[myProc])
-        {
-            scalar* __restrict__ d = data + c*componentStride;
-            forAll(send, i)
-            {
-                d[recv[i]] = d[send[i]];
-            }
-        }
-    }
-
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    forAll(sendNodes_, proci)
-    {
-        const labelList& send = sendNodes_[proci];
-        const labelList& comps = sendComponents_[proci];
-        if (proci == myProc || send.empty() || comps.empty())
-        {
-            continue;
-        }
-        scalarList buf(comps.size()*send.size());
-        label k = 0;
-        for (const label c : comps)
-        {
-            const scalar* d = data + c*componentStride;
-            forAll(send, i)
-            {
-                buf[k++] = d[send[i]];
-            }
-        }
-        UOPstream toProc(proci, pBufs);
-        toProc << buf;
-    }
-    pBufs.finishedSends();
-
-    forAll(recvNodes_, proci)
-    {
-        const labelList& recv = recvNodes_[proci];
-        const labelList& comps = recvComponents_[proci];
-        if (proci == myProc || recv.empty() || comps.empty())
-        {
-            continue;
-        }
-        scalarList buf;
-        UIPstream fromProc(proci, pBufs);
-        fromProc >> buf;
-        label k = 0;
-        for (const label c : comps)
-        {
-            scalar* d = data + c*componentStride;
-            forAll(recv, i)
-            {
-                d[recv[i]] = buf[k++];
-            }
-        }
-    }
+    transfer
+    (
+        componentLists(data, identity(nSelectable_), componentStride),
+        sendNodes_, recvNodes_, &sendComponents_, &recvComponents_,
+        assignOp()
+    );
 }
 
 
 void Foam::haloExchange::exchange(labelUList& data) const
 {
-    const label myProc = Pstream::myProcNo();
-    {
-        const labelList& send = sendNodes_[myProc];
-        const labelList& recv = recvNodes_[myProc];
-        forAll(send, i)
-        {
-            data[recv[i]] = data[send[i]];
-        }
-    }
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    forAll(sendNodes_, proci)
-    {
-        const labelList& send = sendNodes_[proci];
-        if (proci != myProc && send.size())
-        {
-            UOPstream toProc(proci, pBufs);
-            toProc << labelList(UIndirectList<label>(data, send));
-        }
-    }
-    pBufs.finishedSends();
-    forAll(recvNodes_, proci)
-    {
-        const labelList& recv = recvNodes_[proci];
-        if (proci != myProc && recv.size())
-        {
-            labelList buf;
-            UIPstream fromProc(proci, pBufs);
-            fromProc >> buf;
-            forAll(recv, i)
-            {
-                data[recv[i]] = buf[i];
-            }
-        }
-    }
+    transfer
+    (
+        List<nodeList<label>>(1, nodeList<label>{data.data(), 1}),
+        sendNodes_, recvNodes_, nullptr, nullptr, assignOp()
+    );
 }
 
 
@@ -361,88 +375,11 @@ void Foam::haloExchange::copyToHalo
     std::initializer_list<nodeField> fields
 ) const
 {
-    const label myProc = Pstream::myProcNo();
-
-    // Periodic images on this processor: no communication
-    {
-        const labelList& send = sendNodes_[myProc];
-        const labelList& recv = recvNodes_[myProc];
-        for (const nodeField& f : fields)
-        {
-            const label nc = f.nComponents;
-            scalar* __restrict__ d = f.data;
-            forAll(send, i)
-            {
-                for (label c = 0; c < nc; ++c)
-                {
-                    d[recv[i]*nc + c] = d[send[i]*nc + c];
-                }
-            }
-        }
-    }
-
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    label nComp = 0;
-    for (const nodeField& f : fields)
-    {
-        nComp += f.nComponents;
-    }
-
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    forAll(sendNodes_, proci)
-    {
-        const labelList& send = sendNodes_[proci];
-        if (proci == myProc || send.empty())
-        {
-            continue;
-        }
-        scalarList buf(nComp*send.size());
-        label k = 0;
-        for (const nodeField& f : fields)
-        {
-            const label nc = f.nComponents;
-            const scalar* d = f.data;
-            forAll(send, i)
-            {
-                for (label c = 0; c < nc; ++c)
-                {
-                    buf[k++] = d[send[i]*nc + c];
-                }
-            }
-        }
-        UOPstream toProc(proci, pBufs);
-        toProc << buf;
-    }
-    pBufs.finishedSends();
-
-    forAll(recvNodes_, proci)
-    {
-        const labelList& recv = recvNodes_[proci];
-        if (proci == myProc || recv.empty())
-        {
-            continue;
-        }
-        scalarList buf;
-        UIPstream fromProc(proci, pBufs);
-        fromProc >> buf;
-        label k = 0;
-        for (const nodeField& f : fields)
-        {
-            const label nc = f.nComponents;
-            scalar* d = f.data;
-            forAll(recv, i)
-            {
-                for (label c = 0; c < nc; ++c)
-                {
-                    d[recv[i]*nc + c] = buf[k++];
-                }
-            }
-        }
-    }
+    transfer
+    (
+        List<nodeField>(fields),
+        sendNodes_, recvNodes_, nullptr, nullptr, assignOp()
+    );
 }
 
 
@@ -451,91 +388,13 @@ void Foam::haloExchange::addToOwners
     std::initializer_list<nodeField> fields
 ) const
 {
-    const label myProc = Pstream::myProcNo();
-
     // The images' values travel the copy's routes backwards: from the
-    // receiving halo nodes to the sending owner nodes. Periodic images on
-    // this processor first, then the other processors in rank order (a
-    // fixed order of the additions: the run repeats itself exactly)
-    {
-        const labelList& send = sendNodes_[myProc];
-        const labelList& recv = recvNodes_[myProc];
-        for (const nodeField& f : fields)
-        {
-            const label nc = f.nComponents;
-            scalar* __restrict__ d = f.data;
-            forAll(send, i)
-            {
-                for (label c = 0; c < nc; ++c)
-                {
-                    d[send[i]*nc + c] += d[recv[i]*nc + c];
-                }
-            }
-        }
-    }
-
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
-    label nComp = 0;
-    for (const nodeField& f : fields)
-    {
-        nComp += f.nComponents;
-    }
-
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    forAll(recvNodes_, proci)
-    {
-        const labelList& recv = recvNodes_[proci];
-        if (proci == myProc || recv.empty())
-        {
-            continue;
-        }
-        scalarList buf(nComp*recv.size());
-        label k = 0;
-        for (const nodeField& f : fields)
-        {
-            const label nc = f.nComponents;
-            const scalar* d = f.data;
-            forAll(recv, i)
-            {
-                for (label c = 0; c < nc; ++c)
-                {
-                    buf[k++] = d[recv[i]*nc + c];
-                }
-            }
-        }
-        UOPstream toProc(proci, pBufs);
-        toProc << buf;
-    }
-    pBufs.finishedSends();
-
-    forAll(sendNodes_, proci)
-    {
-        const labelList& send = sendNodes_[proci];
-        if (proci == myProc || send.empty())
-        {
-            continue;
-        }
-        scalarList buf;
-        UIPstream fromProc(proci, pBufs);
-        fromProc >> buf;
-        label k = 0;
-        for (const nodeField& f : fields)
-        {
-            const label nc = f.nComponents;
-            scalar* d = f.data;
-            forAll(send, i)
-            {
-                for (label c = 0; c < nc; ++c)
-                {
-                    d[send[i]*nc + c] += buf[k++];
-                }
-            }
-        }
-    }
+    // receiving halo nodes to the sending owner nodes
+    transfer
+    (
+        List<nodeField>(fields),
+        recvNodes_, sendNodes_, nullptr, nullptr, addOp()
+    );
 }
 
 
