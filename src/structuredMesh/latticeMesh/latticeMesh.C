@@ -171,17 +171,17 @@ void Foam::latticeMesh::findPeriodic()
 }
 
 
-void Foam::latticeMesh::buildBox()
+Foam::List<Foam::labelVector> Foam::latticeMesh::cellLatticeIjk
+(
+    labelVector& lo,
+    labelVector& hi
+) const
 {
     const vectorField& C = mesh_.cellCentres();
-    const label nCells = mesh_.nCells();
-    const label myProc = Pstream::myProcNo();
-    const label nProcs = Pstream::nProcs();
 
-    // Global coordinates of the owned cells
-    List<labelVector> cellIjk(nCells);
-    labelVector lo(labelMax, labelMax, labelMax);
-    labelVector hi(labelMin, labelMin, labelMin);
+    List<labelVector> cellIjk(mesh_.nCells());
+    lo = labelVector(labelMax, labelMax, labelMax);
+    hi = labelVector(labelMin, labelMin, labelMin);
     const scalar tol = 1e-3;
     forAll(C, celli)
     {
@@ -207,8 +207,12 @@ void Foam::latticeMesh::buildBox()
         lo = min(lo, ijk);
         hi = max(hi, ijk);
     }
+    return cellIjk;
+}
 
-    // Local padded box
+
+void Foam::latticeMesh::sizeBox(const labelVector& lo, const labelVector& hi)
+{
     const label h = haloWidth_;
     for (direction d = 0; d < 3; ++d)
     {
@@ -217,7 +221,7 @@ void Foam::latticeMesh::buildBox()
             boxStart_[d] = 0;
             boxN_[d] = 1;
         }
-        else if (nCells)
+        else if (mesh_.nCells())
         {
             boxStart_[d] = lo[d] - h;
             boxN_[d] = hi[d] - lo[d] + 1 + 2*h;
@@ -229,50 +233,14 @@ void Foam::latticeMesh::buildBox()
         }
     }
     stride_ = labelVector(1, boxN_.x(), boxN_.x()*boxN_.y());
-    const label nBox = boxN_.x()*boxN_.y()*boxN_.z();
+}
 
-    // Owner of every global node (-1: missing cell)
-    const labelVector& N = globalN_;
-    auto globalIndex = [&N](const labelVector& g)
-    {
-        return g.x() + N.x()*(g.y() + N.y()*g.z());
-    };
 
-    labelList globalOwner(nGlobalBox(), -1);
-    forAll(cellIjk, celli)
-    {
-        globalOwner[globalIndex(cellIjk[celli])] = myProc;
-    }
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(globalOwner, maxEqOp<label>());
-        Pstream::listCombineScatter(globalOwner);
-    }
-
-    // Every processor's box, to address nodes in the owner's box
-    List<labelVector> procBoxStart(nProcs), procBoxN(nProcs);
-    procBoxStart[myProc] = boxStart_;
-    procBoxN[myProc] = boxN_;
-    Pstream::gatherList(procBoxStart);
-    Pstream::scatterList(procBoxStart);
-    Pstream::gatherList(procBoxN);
-    Pstream::scatterList(procBoxN);
-
-    // Maps cell <-> node
-    kind_.setSize(nBox, WALL);
-    nodeCell_.setSize(nBox, -1);
-    cellNode_.setSize(nCells);
-    forAll(cellIjk, celli)
-    {
-        const labelVector b = cellIjk[celli] - boxStart_;
-        const label n = node(b.x(), b.y(), b.z());
-        cellNode_[celli] = n;
-        nodeCell_[n] = celli;
-        kind_[n] = OWNED;
-    }
-
-    // Nodes within reach (Chebyshev distance <= h) of an owned node:
-    // separable dilation of the owned mask
+Foam::List<bool> Foam::latticeMesh::nodesWithinReach() const
+{
+    // Separable dilation of the owned mask
+    const label h = haloWidth_;
+    const label nBox = this->nBox();
     List<bool> reach(nBox, false);
     forAll(cellNode_, celli)
     {
@@ -303,10 +271,46 @@ void Foam::latticeMesh::buildBox()
         }
         reach.transfer(dilated);
     }
+    return reach;
+}
 
-    // Halo and wall nodes
+
+void Foam::latticeMesh::classifyNodes(const List<labelVector>& cellIjk)
+{
+    const label myProc = Pstream::myProcNo();
+    const label nProcs = Pstream::nProcs();
+
+    // Owner of every global node (-1: missing cell)
+    const labelVector& N = globalN_;
+    auto globalIndex = [&N](const labelVector& g)
+    {
+        return g.x() + N.x()*(g.y() + N.y()*g.z());
+    };
+
+    labelList globalOwner(nGlobalBox(), -1);
+    forAll(cellIjk, celli)
+    {
+        globalOwner[globalIndex(cellIjk[celli])] = myProc;
+    }
+    if (Pstream::parRun())
+    {
+        Pstream::listCombineGather(globalOwner, maxEqOp<label>());
+        Pstream::listCombineScatter(globalOwner);
+    }
+
+    // Every processor's box, to address nodes in the owner's box
+    List<labelVector> procBoxStart(nProcs), procBoxN(nProcs);
+    procBoxStart[myProc] = boxStart_;
+    procBoxN[myProc] = boxN_;
+    Pstream::gatherList(procBoxStart);
+    Pstream::scatterList(procBoxStart);
+    Pstream::gatherList(procBoxN);
+    Pstream::scatterList(procBoxN);
+
+    const List<bool> reach(nodesWithinReach());
+
     DynamicList<label> haloNodes, haloProc, haloOwnerNode;
-    for (label n = 0; n < nBox; ++n)
+    for (label n = 0; n < nBox(); ++n)
     {
         if (kind_[n] == OWNED)
         {
@@ -346,8 +350,11 @@ void Foam::latticeMesh::buildBox()
     }
 
     halo_ = haloExchange(haloNodes, haloProc, haloOwnerNode);
+}
 
-    // Runs of owned nodes along i
+
+void Foam::latticeMesh::findRuns()
+{
     DynamicList<nodeRun> runs;
     for (label k = 0; k < boxN_.z(); ++k)
     {
@@ -373,6 +380,31 @@ void Foam::latticeMesh::buildBox()
         }
     }
     runs_.transfer(runs);
+}
+
+
+void Foam::latticeMesh::buildBox()
+{
+    labelVector lo, hi;
+    const List<labelVector> cellIjk(cellLatticeIjk(lo, hi));
+    sizeBox(lo, hi);
+
+    // Maps cell <-> node
+    const label nBox = boxN_.x()*boxN_.y()*boxN_.z();
+    kind_.setSize(nBox, WALL);
+    nodeCell_.setSize(nBox, -1);
+    cellNode_.setSize(cellIjk.size());
+    forAll(cellIjk, celli)
+    {
+        const labelVector b = cellIjk[celli] - boxStart_;
+        const label n = node(b.x(), b.y(), b.z());
+        cellNode_[celli] = n;
+        nodeCell_[n] = celli;
+        kind_[n] = OWNED;
+    }
+
+    classifyNodes(cellIjk);
+    findRuns();
 }
 
 
