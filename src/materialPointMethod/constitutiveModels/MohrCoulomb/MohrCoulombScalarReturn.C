@@ -427,6 +427,25 @@ Foam::constitutiveModels::MohrCoulomb::principalReturn
 }
 
 
+// updateScalar: the principal values sB of the trial stress (descending),
+// and how the returned stress is rebuilt with its principal directions:
+// - well separated values (both gaps above 1e-5 of the scale): the
+//   closed-form values, and the spectral projectors of the trial stress
+//       P_i = prod_{j != i} (A - s_j I)/(s_i - s_j),
+//       sigma = A + D2 I + (D1 - D2) P1 + (D3 - D2) P3,
+//       D_i = sC_i - sB_i  (P2 = I - P1 - P3),
+//   without eigenvectors. The projectors' error is eps |A|/gap
+//   relative (below 1e-10 here), and D1 - D2, D3 - D2 stay within the
+//   gaps of an order-keeping return (checked against the QR
+//   reconstruction in Test-constitutiveModels);
+// - two values close, the third apart from them by more than 1e-3 of
+//   the scale (near a triaxial line): the third's direction from the
+//   cross products of the rows of A - s I (error eps |A|/gap), the
+//   close pair and their directions from the 2 x 2 problem in the
+//   plane normal to it by one Jacobi rotation (exactly orthonormal,
+//   values to round-off; Golub & Van Loan 2013, section 8.5);
+// - all three close (near the hydrostatic axis): Eigen's iterative
+//   (QR) decomposition.
 Foam::constitutiveModels::MohrCoulomb::returnRegion
 Foam::constitutiveModels::MohrCoulomb::updateScalar
 (
@@ -492,25 +511,7 @@ Foam::constitutiveModels::MohrCoulomb::updateScalar
         }
     }
 
-    // The principal values sB of the trial stress (descending), and how the
-    // returned stress is rebuilt with its principal directions:
-    // - well separated values (both gaps above 1e-5 of the scale): the
-    //   closed-form values, and the spectral projectors of the trial stress
-    //       P_i = prod_{j != i} (A - s_j I)/(s_i - s_j),
-    //       sigma = A + D2 I + (D1 - D2) P1 + (D3 - D2) P3,
-    //       D_i = sC_i - sB_i  (P2 = I - P1 - P3),
-    //   without eigenvectors. The projectors' error is eps |A|/gap
-    //   relative (below 1e-10 here), and D1 - D2, D3 - D2 stay within the
-    //   gaps of an order-keeping return (checked against the QR
-    //   reconstruction in Test-constitutiveModels);
-    // - two values close, the third apart from them by more than 1e-3 of
-    //   the scale (near a triaxial line): the third's direction from the
-    //   cross products of the rows of A - s I (error eps |A|/gap), the
-    //   close pair and their directions from the 2 x 2 problem in the
-    //   plane normal to it by one Jacobi rotation (exactly orthonormal,
-    //   values to round-off; Golub & Van Loan 2013, section 8.5);
-    // - all three close (near the hydrostatic axis): Eigen's iterative
-    //   (QR) decomposition.
+    // The principal values and how the stress is rebuilt: see above
     const bool projectors = (gap > 1e-5*scale);
     vector sB(sApprox), n1(Zero), n2(Zero), n3(Zero);
     if (!projectors)
