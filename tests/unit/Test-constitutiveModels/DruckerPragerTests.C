@@ -22,6 +22,42 @@ Description
 
 // * * * * * * * * * * * * * * * DruckerPrager  * * * * * * * * * * * * * * //
 
+// c = 0: tensile states return to zero (every one for psi = 0,
+// near-hydrostatic ones for psi > 0; see testMohrCoulombOrigin)
+static void testDruckerPragerZero
+(
+    const DruckerPrager& dp,
+    const std::string& tag,
+    const scalar psi,
+    Random& rnd
+)
+{
+    scalar eZero = 0;
+    label nZero = 0;
+    for (label t = 0; t < 1000; ++t)
+    {
+        vector p(1e5*rnd.sample01<vector>());
+        const bool hydro = (psi > 0);
+        if (hydro)
+        {
+            p = 1e5*(vector::one + 0.1*rnd.sample01<vector>());
+        }
+        symmTensor s(transform(randomRotation(rnd), diagonal(p)));
+        scalar ep = 0;
+        dp.updateStress(symmTensor::zero, s, ep);
+        eZero = max(eZero, maxMag(s));
+        if (maxMag(s) == 0) ++nZero;
+    }
+    symmTensor s(Zero);
+    scalar ep = 0;
+    dp.updateStress(symmTensor::zero, s, ep);
+    eZero = max(eZero, maxMag(s));
+    check(eZero == 0 && ep == 0, tag + (psi > 0 ? " near-hydrostatic" :
+        " every") + " tensile trial and the zero state return exactly"
+        " to zero", eZero, 0);
+}
+
+
 static void testDruckerPragerSet
 (
     const scalar c,
@@ -152,33 +188,9 @@ static void testDruckerPragerSet
             tol);
     }
 
-    // c = 0: tensile states return to zero (every one for psi = 0,
-    // near-hydrostatic ones for psi > 0; see testMohrCoulombOrigin)
     if (c == 0 && dp.eta() > 0)
     {
-        scalar eZero = 0;
-        label nZero = 0;
-        for (label t = 0; t < 1000; ++t)
-        {
-            vector p(1e5*rnd.sample01<vector>());
-            const bool hydro = (psi > 0);
-            if (hydro)
-            {
-                p = 1e5*(vector::one + 0.1*rnd.sample01<vector>());
-            }
-            symmTensor s(transform(randomRotation(rnd), diagonal(p)));
-            scalar ep = 0;
-            dp.updateStress(symmTensor::zero, s, ep);
-            eZero = max(eZero, maxMag(s));
-            if (maxMag(s) == 0) ++nZero;
-        }
-        symmTensor s(Zero);
-        scalar ep = 0;
-        dp.updateStress(symmTensor::zero, s, ep);
-        eZero = max(eZero, maxMag(s));
-        check(eZero == 0 && ep == 0, tag + (psi > 0 ? " near-hydrostatic" :
-            " every") + " tensile trial and the zero state return exactly"
-            " to zero", eZero, 0);
+        testDruckerPragerZero(dp, tag, psi, rnd);
     }
 }
 
