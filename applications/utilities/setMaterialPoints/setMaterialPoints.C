@@ -45,41 +45,259 @@ Description
                 min         (0 0 -1);
                 max         (20 10 1);
                 material    sand;               // from constant/soilProperties
-                velocity    (0 0 0);            // [m/s] (default 0)
-                porosity    0.37;               // void fraction n (default 0)
-                stress      geostatic;          // none (default) | geostatic
-                geostaticCoeffs
-                {
-                    surface     10;             // [m] height of the free
-                                                // surface along -gravity
-                    K0          0.5;            // horizontal/vertical stress
-                    waterDensity 1000;          // [kg/m3] submerged soil
-                                                // (buoyancy): default 0
-                }
+                // velocity, porosity, stress, geostaticCoeffs: see
+                // materialPointRegion.H
             }
         );
     \endverbatim
 
-    Geostatic stress (compression negative): vertical effective stress
-    sigma_v = gamma (h - surface) at height h below the surface along
-    -gravity (gravity from constant/soilProperties, or constant/g for the
-    gravity effect), horizontal
-    K0 sigma_v, with the unit weight gamma = rho |g| of the dry soil, or
-    for a soil under water (the buoyancy effect) the buoyant unit weight
-    gamma' = (rho - (1 - n) rho_w) |g| = phi (rho_s - rho_w) |g| (rho the
-    material's density per mixture volume phi rho_s, n the porosity).
+    The geostatic stress takes gravity from constant/soilProperties, or
+    from constant/g (the gravity effect).
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "latticeMesh.H"
 #include "materialPoints.H"
-#include "searchableSurface.H"
+#include "materialPointRegion.H"
 #include "volumeType.H"
-#include "Enum.H"
 #include "uniformDimensionedFields.H"
 #include "globalIndex.H"
 #include <chrono>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+//- Points per cell and direction, in [1, 8]
+static label readPointsPerCell(const dictionary& dict)
+{
+    const label n = dict.get<label>("pointsPerCell");
+    if (n < 1 || n > 8)
+    {
+        FatalIOErrorInFunction(dict)
+            << "pointsPerCell " << n << " is not allowed: it must lie in"
+            << " [1, 8] (points per cell and direction)" << exit(FatalIOError);
+    }
+    return n;
+}
+
+
+//- Gravity from constant/soilProperties, or from constant/g (the gravity
+//  effect) when the soil's dictionary gives none
+static vector readGravity(const dictionary& soilDict, const fvMesh& mesh)
+{
+    vector gravity = soilDict.getOrDefault<vector>("gravity", Zero);
+    if (mag(gravity) == 0)
+    {
+        IOobject gio
+        (
+            "g",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        );
+        if (gio.typeHeaderOk<uniformDimensionedVectorField>(true))
+        {
+            gravity = uniformDimensionedVectorField(gio).value();
+        }
+    }
+    return gravity;
+}
+
+
+//- Candidate points: the centres of the n^D sub-cells of every cell, and
+//  their identities from the cell's global lattice index and the sub-cell
+//  (-1 when there are more sub-cells than labels: then false)
+static bool seedCandidates
+(
+    const latticeMesh& lattice,
+    const fvMesh& mesh,
+    const label n,
+    pointField& candidates,
+    labelList& candidateId
+)
+{
+    const label nDim = lattice.nDim();
+    const label perCell = (nDim == 2 ? n*n : n*n*n);
+    const scalar dx = lattice.dx();
+    const vectorField& C = mesh.cellCentres();
+    candidates.setSize(mesh.nCells()*perCell);
+    candidateId.setSize(candidates.size());
+    const labelVector& N = lattice.globalN();
+    const bool globalIds =
+        scalar(lattice.nGlobalBox())*perCell < scalar(labelMax);
+
+    label i = 0;
+    forAll(C, celli)
+    {
+        const labelVector g = lattice.globalIjk(lattice.cellNode()[celli]);
+        const label cellId = g.x() + N.x()*(g.y() + N.y()*g.z());
+        for (label c = 0; c < (nDim == 2 ? 1 : n); ++c)
+        for (label b = 0; b < n; ++b)
+        for (label a = 0; a < n; ++a)
+        {
+            candidateId[i] =
+                globalIds ? cellId*perCell + a + n*(b + n*c) : -1;
+            candidates[i++] = C[celli] + dx*vector
+            (
+                (a + 0.5)/n - 0.5,
+                (b + 0.5)/n - 0.5,
+                nDim == 2 ? 0 : (c + 0.5)/n - 0.5
+            );
+        }
+    }
+    return globalIds;
+}
+
+
+//- The first region containing each candidate (-1: none), and the number
+//  of points of each region; a region without points is an error, or a
+//  warning when it lies inside regions listed before it
+static labelList assignRegions
+(
+    const PtrList<materialPointRegion>& regions,
+    const pointField& candidates,
+    const fvMesh& mesh,
+    const scalar subCellSize,
+    labelList& regionCount
+)
+{
+    labelList region(candidates.size(), -1);
+    regionCount.setSize(regions.size());
+    regionCount = 0;
+    labelList insideCount(regions.size(), 0);
+    forAll(regions, r)
+    {
+        List<volumeType> vt;
+        regions[r].surface().getVolumeType(candidates, vt);
+        forAll(vt, i)
+        {
+            if (vt[i] == volumeType::INSIDE)
+            {
+                ++insideCount[r];
+                if (region[i] < 0)
+                {
+                    region[i] = r;
+                    ++regionCount[r];
+                }
+            }
+        }
+    }
+
+    forAll(regionCount, r)
+    {
+        if
+        (
+            returnReduce(regionCount[r], sumOp<label>()) == 0
+         && returnReduce(insideCount[r], sumOp<label>()) > 0
+        )
+        {
+            WarningInFunction
+                << "Region " << regions[r].name() << " lies entirely"
+                << " inside regions listed before it: it gets no points" << endl;
+        }
+        else if (returnReduce(regionCount[r], sumOp<label>()) == 0)
+        {
+            FatalIOErrorInFunction(regions[r].dict())
+                << "Region " << regions[r].name() << " contains no"
+                << " point of the mesh: it lies outside the mesh (bounding box "
+                << boundBox(mesh.points(), true) << ") or is smaller than a"
+                << " sub-cell of size " << subCellSize << exit(FatalIOError);
+        }
+    }
+    return region;
+}
+
+
+//- The material points of the candidates in a region, with their
+//  region's material, velocity, porosity and initial stress
+static void fillPoints
+(
+    const PtrList<materialPointRegion>& regions,
+    const pointField& candidates,
+    const labelList& candidateId,
+    const labelList& region,
+    const bool globalIds,
+    const latticeMesh& lattice,
+    const label n,
+    const vector& gravity,
+    materialPoints& points
+)
+{
+    const label nDim = lattice.nDim();
+    const label perCell = (nDim == 2 ? n*n : n*n*n);
+    label nPoints = 0;
+    forAll(region, i)
+    {
+        if (region[i] >= 0) ++nPoints;
+    }
+    points.setSize(nPoints);
+    const scalar Vp = lattice.cellVolume()/perCell;
+    const vector halfSize(0.5/n, 0.5/n, nDim == 2 ? 0.5 : 0.5/n);
+    const vector up = mag(gravity) > SMALL ? -gravity/mag(gravity) : vector(0, 1, 0);
+    label k = 0;
+    forAll(region, i)
+    {
+        const label r = region[i];
+        if (r < 0)
+        {
+            continue;
+        }
+        const materialPointRegion& reg = regions[r];
+        points.x[k] = candidates[i];
+        points.v[k] = reg.velocity();
+        points.m[k] = reg.rho()*Vp;
+        points.V[k] = Vp;
+        points.V0[k] = Vp;
+        points.F[k] = tensor::I;
+        points.sigma[k] = reg.initialStress(candidates[i], up, mag(gravity));
+        points.plasticStrain[k] = 0;
+        points.C[k] = Zero;
+        points.material[k] = reg.material();
+        points.halfLength[k] = halfSize;
+        points.porosity[k] = reg.porosity();
+        points.id[k] = candidateId[i];
+        ++k;
+    }
+    if (!globalIds)
+    {
+        // (more sub-cells than labels: numbered in processor order)
+        const globalIndex offsets(nPoints);
+        forAll(points.id, i)
+        {
+            points.id[i] = offsets.toGlobal(i);
+        }
+    }
+}
+
+
+//- Points per region and in total, and where they were written
+static void report
+(
+    const PtrList<materialPointRegion>& regions,
+    const labelList& regionCount,
+    const wordList& materialNames,
+    const materialPoints& points,
+    const label n,
+    const word& timeName,
+    const scalar seconds
+)
+{
+    Info<< "Material points" << nl;
+    forAll(regions, r)
+    {
+        Info<< "    " << regions[r].name() << ": "
+            << returnReduce(regionCount[r], sumOp<label>()) << " points of "
+            << materialNames[regions[r].material()] << nl;
+    }
+    Info<< "    total " << returnReduce(points.size(), sumOp<label>())
+        << " points (" << n << " per cell and direction), "
+        << materialPoints::memoryPerPoint() << " bytes per point" << nl
+        << "    written to " << timeName << "/lagrangian/"
+        << materialPoints::cloudName << " in " << seconds << " s" << nl
+        << nl << "End" << nl << endl;
+}
+
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -123,309 +341,42 @@ int main(int argc, char *argv[])
     const latticeMesh lattice(mesh, 1);
     lattice.report(Info);
 
-    const label n = dict.get<label>("pointsPerCell");
-    if (n < 1 || n > 8)
-    {
-        FatalIOErrorInFunction(dict)
-            << "pointsPerCell " << n << " is not allowed: it must lie in"
-            << " [1, 8] (points per cell and direction)" << exit(FatalIOError);
-    }
-
+    const label n = readPointsPerCell(dict);
     const dictionary& materialsDict = soilDict.subDict("materials");
-    const wordList materialNames(materialsDict.toc());
-    // Gravity from constant/soilProperties, or from constant/g (the gravity
-    // effect) when the soil's dictionary gives none
-    vector gravity = soilDict.getOrDefault<vector>("gravity", Zero);
-    if (mag(gravity) == 0)
-    {
-        IOobject gio
-        (
-            "g",
-            runTime.constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        );
-        if (gio.typeHeaderOk<uniformDimensionedVectorField>(true))
-        {
-            gravity = uniformDimensionedVectorField(gio).value();
-        }
-    }
+    const vector gravity = readGravity(soilDict, mesh);
+    const PtrList<materialPointRegion> regions
+    (
+        materialPointRegion::readList(dict, runTime, materialsDict, gravity)
+    );
 
-    // The regions. Read from the list they are nameless blocks: each takes
-    // the scoped name of the file and keyword (setMaterialPointsDict.regions.
-    // <name>), so that an error names where to look
-    PtrList<entry> regionEntries(dict.lookup("regions"));
-    const label nRegions = regionEntries.size();
-    forAll(regionEntries, r)
-    {
-        if (!regionEntries[r].isDict())
-        {
-            FatalIOErrorInFunction(dict)
-                << "regions: entry " << regionEntries[r].keyword() << " is not"
-                << " a dictionary: give each region as name { type ...;"
-                << " material ...; }" << exit(FatalIOError);
-        }
-        regionEntries[r].dict().name() =
-            dict.objectPath() + ".regions." + regionEntries[r].keyword();
-    }
-    if (!nRegions)
-    {
-        FatalIOErrorInFunction(dict)
-            << "regions is empty: give at least one region" << exit(FatalIOError);
-    }
-
-    enum class stressType { none, geostatic };
-    const Enum<stressType> stressTypeNames
-    ({
-        { stressType::none, "none" },
-        { stressType::geostatic, "geostatic" },
-    });
-
-    PtrList<searchableSurface> surfaces(nRegions);
-    labelList regionMaterial(nRegions);
-    List<vector> regionVelocity(nRegions);
-    scalarList regionPorosity(nRegions);
-    scalarList regionRho(nRegions);
-    List<stressType> regionStress(nRegions);
-    scalarList regionSurface(nRegions, 0.0);
-    scalarList regionK0(nRegions, 1.0);
-    scalarList regionWaterRho(nRegions, 0.0);
-
-    forAll(regionEntries, r)
-    {
-        const dictionary& rd = regionEntries[r].dict();
-        const word& name = regionEntries[r].keyword();
-        surfaces.set
-        (
-            r,
-            searchableSurface::New
-            (
-                rd.get<word>("type"),
-                IOobject
-                (
-                    name,
-                    runTime.constant(),
-                    "triSurface",
-                    runTime,
-                    IOobject::MUST_READ,
-                    IOobject::NO_WRITE
-                ),
-                rd
-            )
-        );
-        if (!surfaces[r].hasVolumeType())
-        {
-            FatalIOErrorInFunction(rd)
-                << "Region " << name << ": surface type " << rd.get<word>("type")
-                << " does not enclose a volume. Use a closed surface"
-                << " (searchableBox, searchableCylinder, searchableSphere, a"
-                << " closed triSurfaceMesh)" << exit(FatalIOError);
-        }
-
-        const word mat = rd.get<word>("material");
-        regionMaterial[r] = materialNames.find(mat);
-        if (regionMaterial[r] < 0)
-        {
-            FatalIOErrorInFunction(rd)
-                << "Region " << name << ": material " << mat << " is not in"
-                << " constant/soilProperties materials " << materialNames
-                << exit(FatalIOError);
-        }
-        regionRho[r] = materialsDict.subDict(mat).get<scalar>("rho");
-        regionVelocity[r] = rd.getOrDefault<vector>("velocity", Zero);
-        regionPorosity[r] = rd.getOrDefault<scalar>("porosity", 0);
-        if (!(regionPorosity[r] >= 0 && regionPorosity[r] < 1))
-        {
-            FatalIOErrorInFunction(rd)
-                << "Region " << name << ": porosity " << regionPorosity[r]
-                << " is not allowed: the void fraction must lie in [0, 1)"
-                << exit(FatalIOError);
-        }
-        regionStress[r] =
-            stressTypeNames.getOrDefault("stress", rd, stressType::none);
-        if (regionStress[r] == stressType::geostatic)
-        {
-            const dictionary& gd = rd.subDict("geostaticCoeffs");
-            regionSurface[r] = gd.get<scalar>("surface");
-            regionK0[r] = gd.get<scalar>("K0");
-            regionWaterRho[r] = gd.getOrDefault<scalar>("waterDensity", 0);
-            if (!(regionWaterRho[r] >= 0))
-            {
-                FatalIOErrorInFunction(gd)
-                    << "waterDensity " << regionWaterRho[r] << " is not"
-                    << " allowed: it must be >= 0 [kg/m3]"
-                    << exit(FatalIOError);
-            }
-            if (!(regionK0[r] >= 0))
-            {
-                FatalIOErrorInFunction(gd)
-                    << "K0 " << regionK0[r] << " is not allowed: it must be"
-                    << " >= 0" << exit(FatalIOError);
-            }
-            if (mag(gravity) < SMALL)
-            {
-                FatalIOErrorInFunction(rd)
-                    << "Region " << name << ": geostatic stress needs gravity"
-                    << " (constant/g or gravity in constant/soilProperties)"
-                    << " in constant/soilProperties" << exit(FatalIOError);
-            }
-        }
-    }
-
-    // Candidate points: the centres of the n^D sub-cells of every cell
-    const label nDim = lattice.nDim();
-    const label perCell = (nDim == 2 ? n*n : n*n*n);
-    const scalar dx = lattice.dx();
-    const vectorField& C = mesh.cellCentres();
-    pointField candidates(mesh.nCells()*perCell);
-    labelList candidateId(candidates.size());
-    const labelVector& N = lattice.globalN();
+    pointField candidates;
+    labelList candidateId;
     const bool globalIds =
-        scalar(lattice.nGlobalBox())*perCell < scalar(labelMax);
-    {
-        label i = 0;
-        forAll(C, celli)
-        {
-            const labelVector g = lattice.globalIjk(lattice.cellNode()[celli]);
-            const label cellId = g.x() + N.x()*(g.y() + N.y()*g.z());
-            for (label c = 0; c < (nDim == 2 ? 1 : n); ++c)
-            for (label b = 0; b < n; ++b)
-            for (label a = 0; a < n; ++a)
-            {
-                candidateId[i] =
-                    globalIds ? cellId*perCell + a + n*(b + n*c) : -1;
-                candidates[i++] = C[celli] + dx*vector
-                (
-                    (a + 0.5)/n - 0.5,
-                    (b + 0.5)/n - 0.5,
-                    nDim == 2 ? 0 : (c + 0.5)/n - 0.5
-                );
-            }
-        }
-    }
+        seedCandidates(lattice, mesh, n, candidates, candidateId);
 
-    // First region containing each point
-    labelList region(candidates.size(), -1);
-    labelList regionCount(nRegions, 0);
-    labelList insideCount(nRegions, 0);
-    forAll(surfaces, r)
-    {
-        List<volumeType> vt;
-        surfaces[r].getVolumeType(candidates, vt);
-        forAll(vt, i)
-        {
-            if (vt[i] == volumeType::INSIDE)
-            {
-                ++insideCount[r];
-                if (region[i] < 0)
-                {
-                    region[i] = r;
-                    ++regionCount[r];
-                }
-            }
-        }
-    }
+    labelList regionCount;
+    const labelList region
+    (
+        assignRegions(regions, candidates, mesh, lattice.dx()/n, regionCount)
+    );
 
-    forAll(regionCount, r)
-    {
-        if
-        (
-            returnReduce(regionCount[r], sumOp<label>()) == 0
-         && returnReduce(insideCount[r], sumOp<label>()) > 0
-        )
-        {
-            WarningInFunction
-                << "Region " << regionEntries[r].keyword() << " lies entirely"
-                << " inside regions listed before it: it gets no points" << endl;
-        }
-        else if (returnReduce(regionCount[r], sumOp<label>()) == 0)
-        {
-            FatalIOErrorInFunction(regionEntries[r].dict())
-                << "Region " << regionEntries[r].keyword() << " contains no"
-                << " point of the mesh: it lies outside the mesh (bounding box "
-                << boundBox(mesh.points(), true) << ") or is smaller than a"
-                << " sub-cell of size " << dx/n << exit(FatalIOError);
-        }
-    }
-
-    // The points
     materialPoints points;
-    label nPoints = 0;
-    forAll(region, i)
-    {
-        if (region[i] >= 0) ++nPoints;
-    }
-    points.setSize(nPoints);
-    const scalar Vp = lattice.cellVolume()/perCell;
-    const vector halfSize(0.5/n, 0.5/n, nDim == 2 ? 0.5 : 0.5/n);
-    const vector up = mag(gravity) > SMALL ? -gravity/mag(gravity) : vector(0, 1, 0);
-    label k = 0;
-    forAll(region, i)
-    {
-        const label r = region[i];
-        if (r < 0)
-        {
-            continue;
-        }
-        symmTensor stress(Zero);
-        if (regionStress[r] == stressType::geostatic)
-        {
-            const scalar h = candidates[i] & up;
-            const scalar gamma =
-                (
-                    regionRho[r]
-                  - (1 - regionPorosity[r])*regionWaterRho[r]
-                )*mag(gravity);
-            const scalar sv = gamma*min(h - regionSurface[r], 0.0);
-            const symmTensor vv = sqr(up);
-            stress = sv*vv + regionK0[r]*sv*(symmTensor::I - vv);
-        }
-        points.x[k] = candidates[i];
-        points.v[k] = regionVelocity[r];
-        points.m[k] = regionRho[r]*Vp;
-        points.V[k] = Vp;
-        points.V0[k] = Vp;
-        points.F[k] = tensor::I;
-        points.sigma[k] = stress;
-        points.plasticStrain[k] = 0;
-        points.C[k] = Zero;
-        points.material[k] = regionMaterial[r];
-        points.halfLength[k] = halfSize;
-        points.porosity[k] = regionPorosity[r];
-        points.id[k] = candidateId[i];
-        ++k;
-    }
-    if (!globalIds)
-    {
-        // (more sub-cells than labels: numbered in processor order)
-        const globalIndex offsets(nPoints);
-        forAll(points.id, i)
-        {
-            points.id[i] = offsets.toGlobal(i);
-        }
-    }
-
+    fillPoints
+    (
+        regions, candidates, candidateId, region, globalIds, lattice, n,
+        gravity, points
+    );
     points.write(mesh, lattice);
 
     const scalar seconds = std::chrono::duration<scalar>
     (
         std::chrono::steady_clock::now() - start
     ).count();
-
-    Info<< "Material points" << nl;
-    forAll(regionEntries, r)
-    {
-        Info<< "    " << regionEntries[r].keyword() << ": "
-            << returnReduce(regionCount[r], sumOp<label>()) << " points of "
-            << materialNames[regionMaterial[r]] << nl;
-    }
-    Info<< "    total " << returnReduce(nPoints, sumOp<label>()) << " points ("
-        << n << " per cell and direction), "
-        << materialPoints::memoryPerPoint() << " bytes per point" << nl
-        << "    written to " << runTime.timeName() << "/lagrangian/"
-        << materialPoints::cloudName << " in " << seconds << " s" << nl
-        << nl << "End" << nl << endl;
+    report
+    (
+        regions, regionCount, materialsDict.toc(), points, n,
+        runTime.timeName(), seconds
+    );
 
     return 0;
 }

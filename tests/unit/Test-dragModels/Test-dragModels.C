@@ -41,6 +41,7 @@ Description
 #include "momentumExchange.H"
 #include "IOstreams.H"
 #include "IStringStream.H"
+#include "unitTest.H"
 
 #include <sstream>
 #include <cmath>
@@ -50,23 +51,7 @@ using namespace Foam;
 using dragModels::BeetstraVanDerHoef;
 typedef momentumExchange::schemeType schemeType;
 
-static label nFail = 0;
-
-static void check
-(
-    const bool ok,
-    const std::string& what,
-    const scalar err,
-    const scalar tol
-)
-{
-    Info<< (ok ? "PASS: " : "FAIL: ") << what.c_str() << " (error " << err
-        << ", tolerance " << tol << ")" << endl;
-    if (!ok)
-    {
-        ++nFail;
-    }
-}
+using unitTest::check;
 
 static std::string num(const scalar x)
 {
@@ -975,35 +960,16 @@ static void expectFatal
     const std::string& what
 )
 {
-    std::string msg;
-    bool thrown = false;
-    try
-    {
-        const dictionary dict(makeDict(text));
-        momentumExchange ex(dict);
-    }
-    catch (const Foam::IOerror& err)
-    {
-        thrown = true;
-        msg = err.message();
-    }
-    catch (const Foam::error& err)
-    {
-        thrown = true;
-        msg = "(not an IOerror) " + err.message();
-    }
-    for (char& ch : msg)
-    {
-        if (ch == '\n') ch = ' ';
-    }
-    const bool named = (msg.find(keyword) != std::string::npos);
-    Info<< (thrown && named ? "PASS: " : "FAIL: ") << what.c_str()
-        << " -> FatalIOError naming " << keyword.c_str() << ": \""
-        << msg.c_str() << "\"" << endl;
-    if (!(thrown && named))
-    {
-        ++nFail;
-    }
+    unitTest::expectFatal
+    (
+        [&]()
+        {
+            const dictionary dict(makeDict(text));
+            momentumExchange ex(dict);
+        },
+        keyword,
+        what
+    );
 }
 
 static void testBadInput()
@@ -1096,13 +1062,7 @@ int main(int argc, char *argv[])
         makeModel(name)->report(Info);
     }
 
-    if (nFail)
-    {
-        Info<< nl << nFail << " check(s) FAILED" << endl;
-        return 1;
-    }
-    Info<< nl << "All checks passed" << endl;
-    return 0;
+    return unitTest::finish();
 }
 
 

@@ -34,6 +34,7 @@ Description
 
 #include "fvCFD.H"
 #include "latticeMesh.H"
+#include "unitTest.H"
 
 int main(int argc, char *argv[])
 {
@@ -41,14 +42,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    label nFail = 0;
-    auto check = [&nFail](bool ok, const string& what, const string& detail)
-    {
-        reduce(ok, andOp<bool>());
-        Info<< (ok ? "PASS: " : "FAIL: ") << what.c_str() << " ("
-            << detail.c_str() << ")" << endl;
-        if (!ok) ++nFail;
-    };
+    using namespace unitTest;
 
     const word decomp =
         Pstream::parRun()
@@ -185,38 +179,38 @@ int main(int argc, char *argv[])
 
         const label nOwned = returnReduce(lat.nOwned(), sumOp<label>());
         const word w = "width " + Foam::name(width) + ", " + decomp;
-        check
+        checkAll
         (
             nBad == 0,
             "halo nodes hold the owner's value, " + w,
             Foam::name(returnReduce(nHalo, sumOp<label>())) + " halo nodes, "
           + Foam::name(returnReduce(nBad, sumOp<label>())) + " wrong"
         );
-        check
+        checkAll
         (
             nMissing == 0,
             "every node within reach of an owned node is present, " + w,
             Foam::name(returnReduce(nMissing, sumOp<label>())) + " missing"
         );
-        check
+        checkAll
         (
             nWrongWall == 0,
             "wall nodes are exactly those outside the domain, " + w,
             Foam::name(returnReduce(nWrongWall, sumOp<label>())) + " wrong"
         );
-        check
+        checkAll
         (
             nBadCopy == 0,
             "copyToHalo of node-major lists, " + w,
             Foam::name(returnReduce(nBadCopy, sumOp<label>())) + " wrong"
         );
-        check
+        checkAll
         (
             nBadSum == 0,
             "addToOwners: every owner receives its images' values, " + w,
             Foam::name(returnReduce(nBadSum, sumOp<label>())) + " wrong"
         );
-        check
+        checkAll
         (
             nOwned == lat.nGlobalBox(),
             "owned nodes cover the lattice once, " + w,
@@ -224,8 +218,7 @@ int main(int argc, char *argv[])
         );
     }
 
-    Info<< nl << (nFail ? "FAILED" : "All passed") << endl;
-    return nFail ? 1 : 0;
+    return unitTest::finish();
 }
 
 

@@ -36,20 +36,11 @@ Description
 #include "symmTensor.H"
 #include "vector.H"
 #include "tensor.H"
+#include "unitTest.H"
 
 using namespace Foam;
 
-static label nFail = 0;
-
-static void check(const bool ok, const string& what, const scalar err)
-{
-    Info<< (ok ? "PASS: " : "FAIL: ") << what.c_str() << " (error " << err
-        << ")" << endl;
-    if (!ok)
-    {
-        ++nFail;
-    }
-}
+using namespace Foam::unitTest;
 
 
 // Moments of a population set
@@ -501,8 +492,7 @@ int main(int argc, char *argv[])
     // Unknown names are refused (FatalIOError lists the valid ones): checked
     // by the bad-input tests, which run the solver
 
-    Info<< nl << (nFail ? "FAILED" : "All passed") << endl;
-    return nFail ? 1 : 0;
+    return finish();
 }
 
 

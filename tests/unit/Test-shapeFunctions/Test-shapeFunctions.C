@@ -42,6 +42,7 @@ Description
 #include "shapeFunction.H"
 #include "IOstreams.H"
 #include "tensor.H"
+#include "unitTest.H"
 
 #include <random>
 #include <vector>
@@ -49,17 +50,7 @@ Description
 
 using namespace Foam;
 
-static label nFail = 0;
-
-static void check(const bool ok, const string& what, const scalar err)
-{
-    Info<< (ok ? "PASS: " : "FAIL: ") << what.c_str() << " (error " << err
-        << ")" << endl;
-    if (!ok)
-    {
-        ++nFail;
-    }
-}
+using namespace Foam::unitTest;
 
 
 // * * * * * * * * * * * * * Reference 1D functions  * * * * * * * * * * * //
@@ -789,10 +780,7 @@ int main(int argc, char *argv[])
     testGIMPLimits();
     testBadInput();
 
-    Info<< nl << (nFail ? "FAILED " : "All passed ") << nFail
-        << " failure(s)" << endl;
-
-    return nFail ? 1 : 0;
+    return finish();
 }
 
 

@@ -1,0 +1,211 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "materialPointRegion.H"
+#include "Time.H"
+#include "IOobject.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::materialPointRegion::stressType>
+Foam::materialPointRegion::stressTypeNames
+({
+    { stressType::none, "none" },
+    { stressType::geostatic, "geostatic" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::materialPointRegion::readGeostatic
+(
+    const dictionary& dict,
+    const vector& gravity
+)
+{
+    const dictionary& gd = dict.subDict("geostaticCoeffs");
+    surfaceHeight_ = gd.get<scalar>("surface");
+    K0_ = gd.get<scalar>("K0");
+    waterRho_ = gd.getOrDefault<scalar>("waterDensity", 0);
+    if (!(waterRho_ >= 0))
+    {
+        FatalIOErrorInFunction(gd)
+            << "waterDensity " << waterRho_ << " is not"
+            << " allowed: it must be >= 0 [kg/m3]"
+            << exit(FatalIOError);
+    }
+    if (!(K0_ >= 0))
+    {
+        FatalIOErrorInFunction(gd)
+            << "K0 " << K0_ << " is not allowed: it must be"
+            << " >= 0" << exit(FatalIOError);
+    }
+    if (mag(gravity) < SMALL)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Region " << name_ << ": geostatic stress needs gravity"
+            << " (constant/g or gravity in constant/soilProperties)"
+            << " in constant/soilProperties" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::materialPointRegion::materialPointRegion
+(
+    const word& name,
+    const dictionary& dict,
+    const Time& runTime,
+    const dictionary& materialsDict,
+    const vector& gravity
+)
+:
+    name_(name),
+    dict_(dict),
+    surface_
+    (
+        searchableSurface::New
+        (
+            dict_.get<word>("type"),
+            IOobject
+            (
+                name,
+                runTime.constant(),
+                "triSurface",
+                runTime,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE
+            ),
+            dict_
+        )
+    ),
+    material_(-1),
+    rho_(0),
+    velocity_(Zero),
+    porosity_(0),
+    stress_(stressType::none),
+    surfaceHeight_(0),
+    K0_(1),
+    waterRho_(0)
+{
+    if (!surface_->hasVolumeType())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Region " << name_ << ": surface type "
+            << dict_.get<word>("type")
+            << " does not enclose a volume. Use a closed surface"
+            << " (searchableBox, searchableCylinder, searchableSphere, a"
+            << " closed triSurfaceMesh)" << exit(FatalIOError);
+    }
+
+    const wordList materialNames(materialsDict.toc());
+    const word mat = dict_.get<word>("material");
+    material_ = materialNames.find(mat);
+    if (material_ < 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Region " << name_ << ": material " << mat << " is not in"
+            << " constant/soilProperties materials " << materialNames
+            << exit(FatalIOError);
+    }
+    rho_ = materialsDict.subDict(mat).get<scalar>("rho");
+    velocity_ = dict_.getOrDefault<vector>("velocity", Zero);
+    porosity_ = dict_.getOrDefault<scalar>("porosity", 0);
+    if (!(porosity_ >= 0 && porosity_ < 1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Region " << name_ << ": porosity " << porosity_
+            << " is not allowed: the void fraction must lie in [0, 1)"
+            << exit(FatalIOError);
+    }
+    stress_ = stressTypeNames.getOrDefault("stress", dict_, stressType::none);
+    if (stress_ == stressType::geostatic)
+    {
+        readGeostatic(dict_, gravity);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::PtrList<Foam::materialPointRegion> Foam::materialPointRegion::readList
+(
+    const IOdictionary& dict,
+    const Time& runTime,
+    const dictionary& materialsDict,
+    const vector& gravity
+)
+{
+    // Read from the list they are nameless blocks: each takes the scoped
+    // name of the file and keyword (setMaterialPointsDict.regions.<name>),
+    // so that an error names where to look
+    PtrList<entry> regionEntries(dict.lookup("regions"));
+    forAll(regionEntries, r)
+    {
+        if (!regionEntries[r].isDict())
+        {
+            FatalIOErrorInFunction(dict)
+                << "regions: entry " << regionEntries[r].keyword() << " is not"
+                << " a dictionary: give each region as name { type ...;"
+                << " material ...; }" << exit(FatalIOError);
+        }
+        regionEntries[r].dict().name() =
+            dict.objectPath() + ".regions." + regionEntries[r].keyword();
+    }
+    if (regionEntries.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "regions is empty: give at least one region" << exit(FatalIOError);
+    }
+
+    PtrList<materialPointRegion> regions(regionEntries.size());
+    forAll(regionEntries, r)
+    {
+        regions.set
+        (
+            r,
+            new materialPointRegion
+            (
+                regionEntries[r].keyword(),
+                regionEntries[r].dict(),
+                runTime,
+                materialsDict,
+                gravity
+            )
+        );
+    }
+    return regions;
+}
+
+
+Foam::symmTensor Foam::materialPointRegion::initialStress
+(
+    const point& x,
+    const vector& up,
+    const scalar magG
+) const
+{
+    if (stress_ != stressType::geostatic)
+    {
+        return Zero;
+    }
+    const scalar h = x & up;
+    const scalar gamma = (rho_ - (1 - porosity_)*waterRho_)*magG;
+    const scalar sv = gamma*min(h - surfaceHeight_, 0.0);
+    const symmTensor vv = sqr(up);
+    return sv*vv + K0_*sv*(symmTensor::I - vv);
+}
+
+
+// ************************************************************************* //
