@@ -66,18 +66,7 @@ void Foam::shapeTransfer<Shape>::p2gPoints
 )
 {
     using namespace transferKernels;
-    // Per node of point p, weight N = wx wy wz, gradient (lattice units)
-    // gradN = (w'x wy wz, wx w'y wz, wx wy w'z):
-    //     mass     += N m
-    //     momentum += N m (v + C r),  r = node - point  (APIC; else N m v)
-    //     force    += N m g (+ N f_ext) - V sigma.gradN/dx
-    // The point's factors are formed once per point (A_a, B_a for the S
-    // nodes a of a row) and per row (R), so that each node takes one
-    // contiguous update of its record (mass, momentum | force, 0):
-    //     rec += wx_a (wyz A_a + R) + wyz B_a
-    // A_a = (m, m v + C r_x(a) m dx | m g + f_ext, 0),
-    // R   = (0, wyz m C (r_y, r_z) dx | -V sigma.(w'y wz, wy w'z)/dx, 0),
-    // B_a = (0, 0 | -V sigma.e_x w'x_a/dx, 0).
+    // (the sums and their factors A_a, R, B_a: see shapeTransfer.H)
     constexpr label S = Shape::supportSize;
     constexpr label SZ = (D == 3 ? S : 1);
     constexpr label W = (Forces ? 8 : 4);
@@ -214,22 +203,10 @@ void Foam::shapeTransfer<Shape>::p2gPoints
         }
     }
 
-    // To the grid arrays, all three set (the force zero without forces:
-    // USF adds it after the stress update)
-    for (label n = 0; n < nBox; ++n)
-    {
-        const scalar* rn = rec + W*n;
-        soil.gridMass_[n] = rn[0];
-        soil.gridMomentum_[n] = vector(rn[1], rn[2], rn[3]);
-        if constexpr (Forces)
-        {
-            soil.gridForce_[n] = vector(rn[4], rn[5], rn[6]);
-        }
-        else
-        {
-            soil.gridForce_[n] = Zero;
-        }
-    }
+    recordsToGrid<Forces>
+    (
+        rec, soil.gridMass_, soil.gridMomentum_, soil.gridForce_
+    );
 }
 
 
