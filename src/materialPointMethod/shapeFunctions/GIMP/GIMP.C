@@ -12,41 +12,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "GIMP.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makeShapeFunction.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace shapeFunctions
-{
-    defineTypeNameAndDebug(GIMP, 0);
-    addToRunTimeSelectionTable(shapeFunction, GIMP, dictionary);
-}
-}
-
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::shapeFunctions::GIMP::GIMP(const dictionary& dict)
-:
-    shapeFunction(typeName, dict, supportSize, reachSize)
-{}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::shapeFunctions::GIMP::weights1D
-(
-    const scalar x,
-    const scalar halfLength,
-    label& first,
-    scalar* w,
-    scalar* dw
-) const
-{
-    eval(x, halfLength, first, w, dw);
-}
+makeShapeFunction(GIMP);
 
 
 // ************************************************************************* //

@@ -12,41 +12,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "cubicBSpline.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makeShapeFunction.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace shapeFunctions
-{
-    defineTypeNameAndDebug(cubicBSpline, 0);
-    addToRunTimeSelectionTable(shapeFunction, cubicBSpline, dictionary);
-}
-}
-
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::shapeFunctions::cubicBSpline::cubicBSpline(const dictionary& dict)
-:
-    shapeFunction(typeName, dict, supportSize, reachSize)
-{}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::shapeFunctions::cubicBSpline::weights1D
-(
-    const scalar x,
-    const scalar halfLength,
-    label& first,
-    scalar* w,
-    scalar* dw
-) const
-{
-    eval(x, first, w, dw);
-}
+makeShapeFunction(cubicBSpline);
 
 
 // ************************************************************************* //

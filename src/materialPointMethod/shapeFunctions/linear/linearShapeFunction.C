@@ -12,41 +12,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "linearShapeFunction.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makeShapeFunction.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace shapeFunctions
-{
-    defineTypeNameAndDebug(linear, 0);
-    addToRunTimeSelectionTable(shapeFunction, linear, dictionary);
-}
-}
-
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::shapeFunctions::linear::linear(const dictionary& dict)
-:
-    shapeFunction(typeName, dict, supportSize, reachSize)
-{}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::shapeFunctions::linear::weights1D
-(
-    const scalar x,
-    const scalar halfLength,
-    label& first,
-    scalar* w,
-    scalar* dw
-) const
-{
-    eval(x, first, w, dw);
-}
+makeShapeFunction(linear);
 
 
 // ************************************************************************* //

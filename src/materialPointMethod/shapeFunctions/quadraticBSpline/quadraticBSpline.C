@@ -12,41 +12,11 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "quadraticBSpline.H"
-#include "addToRunTimeSelectionTable.H"
+#include "makeShapeFunction.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-namespace Foam
-{
-namespace shapeFunctions
-{
-    defineTypeNameAndDebug(quadraticBSpline, 0);
-    addToRunTimeSelectionTable(shapeFunction, quadraticBSpline, dictionary);
-}
-}
-
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::shapeFunctions::quadraticBSpline::quadraticBSpline(const dictionary& dict)
-:
-    shapeFunction(typeName, dict, supportSize, reachSize)
-{}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::shapeFunctions::quadraticBSpline::weights1D
-(
-    const scalar x,
-    const scalar halfLength,
-    label& first,
-    scalar* w,
-    scalar* dw
-) const
-{
-    eval(x, first, w, dw);
-}
+makeShapeFunction(quadraticBSpline);
 
 
 // ************************************************************************* //
