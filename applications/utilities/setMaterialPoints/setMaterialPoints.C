@@ -62,8 +62,7 @@ Description
 
     Geostatic stress (compression negative): vertical effective stress
     sigma_v = gamma (h - surface) at height h below the surface along
-    -gravity (gravity from constant/soilProperties, or constant/g for the
-    gravity effect), horizontal
+    -gravity (constant/g, the gravity effect's), horizontal
     K0 sigma_v, with the unit weight gamma = rho |g| of the dry soil, or
     for a soil under water (the buoyancy effect) the buoyant unit weight
     gamma' = (rho - (1 - n) rho_w) |g| = phi (rho_s - rho_w) |g| (rho the
@@ -133,10 +132,16 @@ int main(int argc, char *argv[])
 
     const dictionary& materialsDict = soilDict.subDict("materials");
     const wordList materialNames(materialsDict.toc());
-    // Gravity from constant/soilProperties, or from constant/g (the gravity
-    // effect) when the soil's dictionary gives none
-    vector gravity = soilDict.getOrDefault<vector>("gravity", Zero);
-    if (mag(gravity) == 0)
+    // Gravity from constant/g (the gravity effect's), as the solver
+    if (soilDict.found("gravity"))
+    {
+        FatalIOErrorInFunction(soilDict)
+            << "gravity is not read from constant/soilProperties: it is the"
+            << " gravity effect's, from constant/g (value (...);): add"
+            << " gravity to effects in constant/physicsProperties"
+            << exit(FatalIOError);
+    }
+    vector gravity(Zero);
     {
         IOobject gio
         (
@@ -267,8 +272,8 @@ int main(int argc, char *argv[])
             {
                 FatalIOErrorInFunction(rd)
                     << "Region " << name << ": geostatic stress needs gravity"
-                    << " (constant/g or gravity in constant/soilProperties)"
-                    << " in constant/soilProperties" << exit(FatalIOError);
+                    << " (constant/g, with gravity in the effects of"
+                    << " constant/physicsProperties)" << exit(FatalIOError);
             }
         }
     }
