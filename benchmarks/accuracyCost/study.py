@@ -69,6 +69,8 @@ if not PROJECT:
     sys.exit('study.py: source etc/bashrc first (or run ./Allrun)')
 sys.path.insert(0, os.path.join(PROJECT, 'tests', 'lib'))
 import foamio  # noqa: E402
+sys.path.insert(0, os.path.join(PROJECT, 'bin', 'tools'))
+import foamDictEdit  # noqa: E402
 
 TESTS = os.path.join(PROJECT, 'tests', 'validation')
 TUTORIALS = os.path.join(PROJECT, 'tutorials')
@@ -386,11 +388,16 @@ def cavity_run(spec, case, s):
 # ----------------------------------------------------------------- the soil
 
 def soil_parameters(case, material):
-    """rho, E, nu of MATERIAL and the gravity vector of soilProperties."""
+    """rho, E, nu of MATERIAL and the gravity vector (constant/g, when the
+    case has the gravity effect)."""
     text = open(case + '/constant/soilProperties').read()
     block = text[text.find(material, text.find('materials')):]
     get = lambda k: float(re.search(r'\b%s\s+([^;\s]+);' % k, block).group(1))
-    g = re.search(r'^gravity\s+\(([^)]*)\)', text, re.M)
+    effects = open(case + '/constant/physicsProperties').read()
+    g = None
+    if re.search(r'^effects\s+\([^)]*\bgravity\b', effects, re.M):
+        g = re.search(r'^value\s+\(([^)]*)\)',
+                      open(case + '/constant/g').read(), re.M)
     g = np.array([float(a) for a in g.group(1).split()]) if g else np.zeros(3)
     return get('rho'), get('E'), get('nu'), g
 
@@ -560,7 +567,7 @@ def darcy_run(spec, case, s):
     set_entry(case + '/system/controlDict', 'deltaT', num(dt))
     set_entry(case + '/constant/fluidProperties', 'nu', num(0.1 * dx * dx / dt))
     set_entry(case + '/system/controlDict', 'soilCFL', num(spec['CFL']))
-    set_entry(case + '/constant/couplingProperties', 'dragModel', 'KozenyCarman')
+    set_entry(case + '/constant/dragProperties', 'dragModel', 'KozenyCarman')
     set_entry(case + '/system/setMaterialPointsDict', 'material', 'dense', True)
     set_entry(case + '/system/setMaterialPointsDict', 'porosity', num(DARCY_N), True)
     run_app(case, 'blockMesh')
@@ -598,11 +605,11 @@ def flagship_case(case, dx, T, CFL=0.5, twoWay=False, E=None):
     if twoWay:
         # As the tutorial's Allrun -twoWay (waterDensity sits in a sub-dict)
         set_entry(case + '/constant/physicsProperties', 'effects',
-                  '(fluid soil drag porousFlow buoyancy)')
-        set_entry(case + '/constant/couplingProperties', 'drag', 'twoWay')
+                  '(fluid soil drag porousFlow buoyancy gravity)')
+        foamDictEdit.set_entry(case + '/constant/physicsProperties',
+                               'gravityCoeffs/phases', '(fluid soil)')
+        set_entry(case + '/constant/dragProperties', 'drag', 'twoWay')
         set_entry(case + '/constant/fluidProperties', 'smagorinskyConstant', '0')
-        set_entry(case + '/constant/fluidProperties', 'bodyAcceleration',
-                  '(0 -9.8 0)')
         set_entry(case + '/system/setMaterialPointsDict', 'waterDensity',
                   '1000', True)
     run_app(case, 'blockMesh')

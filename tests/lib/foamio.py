@@ -133,12 +133,18 @@ def check(ok, what, value=None):
 
 
 def check_open(ok, what, value=None):
-    """For a specification item the code does not meet yet: print PASS: when
-    it holds, otherwise OPEN: with the measured value (reported by Alltest,
-    not counted as a failure); return ok. Each use names the open work."""
+    """For a specification item the code does not meet yet: print OPEN:
+    with the measured value, what is still to do (Alltest lists it, not a
+    failure), and return True. Never a PASS: an item that holds prints a
+    FAIL: asking to promote it to check() and returns False, so that a met
+    item cannot stay open where nothing can fail."""
     suffix = '' if value is None else ' (%s)' % value
-    print('%s: %s%s' % ('PASS' if ok else 'OPEN', what, suffix))
-    return ok
+    if ok:
+        print('FAIL: %s%s: met, an open item no longer: promote it to '
+              'foamio.check' % (what, suffix))
+        return False
+    print('OPEN: %s%s' % (what, suffix))
+    return True
 
 
 _CLASS_NCOMP = {'scalarField': 1, 'vectorField': 3, 'symmTensorField': 6,

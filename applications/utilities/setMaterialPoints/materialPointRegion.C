@@ -54,7 +54,8 @@ void Foam::materialPointRegion::readGeostatic
     {
         FatalIOErrorInFunction(dict)
             << "Region " << name_ << ": geostatic stress needs gravity"
-            << " (constant/g or gravity in constant/soilProperties)"
+            << " (constant/g, with gravity in the effects of"
+            << " constant/physicsProperties)"
             << " in constant/soilProperties" << exit(FatalIOError);
     }
 }

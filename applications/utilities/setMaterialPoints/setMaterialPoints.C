@@ -51,8 +51,8 @@ Description
         );
     \endverbatim
 
-    The geostatic stress takes gravity from constant/soilProperties, or
-    from constant/g (the gravity effect).
+    The geostatic stress takes gravity from constant/g (the gravity
+    effect's); a gravity entry in constant/soilProperties is refused.
 
 \*---------------------------------------------------------------------------*/
 
@@ -81,25 +81,31 @@ static label readPointsPerCell(const dictionary& dict)
 }
 
 
-//- Gravity from constant/soilProperties, or from constant/g (the gravity
-//  effect) when the soil's dictionary gives none
+//- Gravity from constant/g (the gravity effect's), as the solver reads it;
+//  the old gravity keyword of constant/soilProperties is refused naming the
+//  new place
 static vector readGravity(const dictionary& soilDict, const fvMesh& mesh)
 {
-    vector gravity = soilDict.getOrDefault<vector>("gravity", Zero);
-    if (mag(gravity) == 0)
+    if (soilDict.found("gravity"))
     {
-        IOobject gio
-        (
-            "g",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        );
-        if (gio.typeHeaderOk<uniformDimensionedVectorField>(true))
-        {
-            gravity = uniformDimensionedVectorField(gio).value();
-        }
+        FatalIOErrorInFunction(soilDict)
+            << "gravity is not read from constant/soilProperties: it is the"
+            << " gravity effect's, from constant/g (value (...);): add"
+            << " gravity to effects in constant/physicsProperties"
+            << exit(FatalIOError);
+    }
+    vector gravity(Zero);
+    IOobject gio
+    (
+        "g",
+        mesh.time().constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
+    );
+    if (gio.typeHeaderOk<uniformDimensionedVectorField>(true))
+    {
+        gravity = uniformDimensionedVectorField(gio).value();
     }
     return gravity;
 }

@@ -29,6 +29,7 @@ Description
 #include "latticeMesh.H"
 #include "latticeBoltzmannFluid.H"
 #include "materialPointSoil.H"
+#include "uniformDimensionedFields.H"
 #include <chrono>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -71,6 +72,21 @@ int main(int argc, char *argv[])
     else
     {
         materialPointSoil mpm(lattice);
+        // The soil's weight, as the scene's gravity effect sets it
+        mpm.setGravity
+        (
+            uniformDimensionedVectorField
+            (
+                IOobject
+                (
+                    "g",
+                    runTime.constant(),
+                    mesh,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE
+                )
+            ).value()
+        );
         const clock::time_point t0 = clock::now();
         for (label s = 0; s < nSteps; ++s)
         {

@@ -277,10 +277,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         positiveEntry(dict_, "rho")
     ),
     collision_(collisionModel::New(dict_, velocitySet_())),
-    bodyAcceleration_
-    (
-        dict_.getOrDefault<vector>("bodyAcceleration", Zero)
-    ),
+    bodyAcceleration_(Zero),
     machLimit_(dict_.getOrDefault<scalar>("machLimit", 0.5)),
     smagorinsky_(dict_.getOrDefault<scalar>("smagorinskyConstant", 0)),
     U_
@@ -331,6 +328,18 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
 {
     checkVelocitySet();
 
+    // Gravity and any body force come from constant/g, one way for every
+    // phase: the old keyword would be silently ignored
+    if (dict_.found("bodyAcceleration"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "bodyAcceleration is not read from constant/fluidProperties:"
+            << " gravity and body forces are the gravity effect's, from"
+            << " constant/g (value (...);): add gravity to effects in"
+            << " constant/physicsProperties, with gravityCoeffs { phases"
+            << " (fluid); } for a body force on the water alone"
+            << exit(FatalIOError);
+    }
     if (!(machLimit_ > 0 && machLimit_ <= 1))
     {
         FatalIOErrorInFunction(dict_)
@@ -382,8 +391,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         Info<< "    Smagorinsky sub-grid model, constant " << smagorinsky_
             << nl;
     }
-    Info<< "    body acceleration " << bodyAcceleration_ << " m/s2" << nl
-        << endl;
+    Info<< endl;
     units_.report(Info, Uref);
     checkUnits();
 

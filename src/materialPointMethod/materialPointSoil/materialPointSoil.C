@@ -428,7 +428,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
         )
     ),
     CFL_(readCFL()),
-    gravity_(dict_.getOrDefault<vector>("gravity", Zero)),
+    gravity_(Zero),
     gravityRamp_(dict_.getOrDefault<scalar>("gravityRamp", 0)),
     localDamping_(dict_.getOrDefault<scalar>("localDamping", 0)),
     time_(mesh_.time().value()),
@@ -463,6 +463,16 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
             << "CFL is not read from constant/soilProperties: the soil's"
             << " Courant number is soilCFL in system/controlDict (a value"
             << " in (0, 1], default 0.5)" << exit(FatalIOError);
+    }
+    if (dict_.found("gravity"))
+    {
+        // Gravity comes from constant/g, one way for every phase: the old
+        // keyword would be silently ignored
+        FatalIOErrorInFunction(dict_)
+            << "gravity is not read from constant/soilProperties: it is the"
+            << " gravity effect's, from constant/g (value (...);): add"
+            << " gravity to effects in constant/physicsProperties (the"
+            << " optional gravityRamp stays here)" << exit(FatalIOError);
     }
     if (!(gravityRamp_ >= 0))
     {
@@ -554,13 +564,12 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     {
         Info<< " (ratio " << flipRatio_ << ")";
     }
-    Info<< ", update " << updateTypeNames[update_] << nl
-        << "    gravity      " << gravity_ << " m/s2";
+    Info<< ", update " << updateTypeNames[update_] << nl;
     if (gravityRamp_ > 0)
     {
-        Info<< ", ramped over " << gravityRamp_ << " s";
+        Info<< "    gravity (constant/g) ramped over " << gravityRamp_ << " s"
+            << nl;
     }
-    Info<< nl;
     if (localDamping_ > 0)
     {
         Info<< "    local damping " << localDamping_ << nl;

@@ -14,7 +14,7 @@
 #     u_c = (G K/nu)(1 - 1/cosh(r H/2)):
 #         <max error> <L2 error> <u_c>
 #     u is the superficial (Darcy) velocity the solver writes as U; G is the
-#     fluid's bodyAcceleration, applied as the force density rho eps G of
+#     water's body acceleration (constant/g), applied as the force density rho eps G of
 #     the Guo-Zhao momentum equation; eps and K from
 #     constant/porousFlowProperties, nu and G from constant/fluidProperties.
 #------------------------------------------------------------------------------
@@ -31,7 +31,8 @@ num = r'([0-9.eE+-]+)'
 fluid = open(os.path.join(case, 'constant', 'fluidProperties')).read()
 porous = open(os.path.join(case, 'constant', 'porousFlowProperties')).read()
 nu = float(re.search(r'\nnu\s+' + num, fluid).group(1))
-G = float(re.search(r'bodyAcceleration\s+\(\s*' + num, fluid).group(1))
+gravity = open(os.path.join(case, 'constant', 'g')).read()
+G = float(re.search(r'\nvalue\s+\(\s*' + num, gravity).group(1))
 eps = float(re.search(r'\n\s*porosity\s+' + num, porous).group(1))
 K = float(re.search(r'\n\s*permeability\s+' + num, porous).group(1))
 H = 1.0

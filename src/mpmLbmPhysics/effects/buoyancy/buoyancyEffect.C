@@ -43,7 +43,7 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     if (!scene.effect<physicsEffects::drag>("drag").twoWay())
     {
         FatalErrorInFunction
-            << "buoyancy needs drag twoWay (constant/couplingProperties):"
+            << "buoyancy needs drag twoWay (constant/dragProperties):"
             << " with oneWay the water does not act on the soil"
             << exit(FatalError);
     }

@@ -56,6 +56,32 @@ Foam::dictionary dragDict
     return d;
 }
 
+
+// constant/dragProperties, after refusing a case that still has the file
+// under its old name (it would otherwise be silently ignored)
+Foam::IOobject dragPropertiesIO(const Foam::fvMesh& mesh)
+{
+    using namespace Foam;
+    IOobject oldIO
+    (
+        "couplingProperties",
+        mesh.time().constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
+    );
+    if (oldIO.typeHeaderOk<IOdictionary>(true))
+    {
+        FatalIOErrorInFunction(IOdictionary(oldIO))
+            << "constant/couplingProperties is the old name of the drag's"
+            << " dictionary: rename it to constant/dragProperties (effect"
+            << " <name> reads constant/<name>Properties)"
+            << exit(FatalIOError);
+    }
+    oldIO.rename("dragProperties");
+    return oldIO;
+}
+
 } // End anonymous namespace
 
 
@@ -64,17 +90,7 @@ Foam::dictionary dragDict
 Foam::physicsEffects::drag::drag(physicsScene& scene)
 :
     physicsEffect(scene),
-    dict_
-    (
-        IOobject
-        (
-            "couplingProperties",
-            scene.mesh().time().constant(),
-            scene.mesh(),
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    ),
+    dict_(dragPropertiesIO(scene.mesh())),
     coupling_(couplingType::oneWay),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(scene.effect<physicsEffects::soil>("soil").mpm()),

@@ -100,29 +100,12 @@ Foam::physicsEffects::gravity::gravity(physicsScene& scene)
         }
         if (ph == "fluid")
         {
-            latticeBoltzmannFluid& lbm =
-                scene.effect<physicsEffects::fluid>("fluid").lbm();
-            if (mag(lbm.bodyAcceleration()) > 0)
-            {
-                FatalIOErrorInFunction(lbm.dict())
-                    << "gravity is given twice: bodyAcceleration "
-                    << lbm.bodyAcceleration() << " here and the gravity"
-                    << " effect (constant/g): remove one" << exit(FatalIOError);
-            }
-            lbm.setBodyAcceleration(g_);
+            scene.effect<physicsEffects::fluid>("fluid").lbm()
+                .setBodyAcceleration(g_);
         }
         else
         {
-            materialPointSoil& mpm =
-                scene.effect<physicsEffects::soil>("soil").mpm();
-            if (mag(mpm.gravity()) > 0)
-            {
-                FatalErrorInFunction
-                    << "gravity is given twice: gravity " << mpm.gravity()
-                    << " in constant/soilProperties and the gravity effect"
-                    << " (constant/g): remove one" << exit(FatalError);
-            }
-            mpm.setGravity(g_);
+            scene.effect<physicsEffects::soil>("soil").mpm().setGravity(g_);
         }
     }
 
