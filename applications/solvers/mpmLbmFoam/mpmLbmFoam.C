@@ -57,7 +57,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    physicsScene scene(mesh);
+    physicsScene scene(runTime, mesh);
 
     if (args.found("estimate"))
     {

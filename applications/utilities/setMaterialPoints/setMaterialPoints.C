@@ -63,7 +63,7 @@ Description
 #include "volumeType.H"
 #include "uniformDimensionedFields.H"
 #include "globalIndex.H"
-#include <chrono>
+#include "clockValue.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -319,7 +319,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    const auto start = std::chrono::steady_clock::now();
+    const clockValue start(clockValue::now());
 
     IOdictionary dict
     (
@@ -374,10 +374,7 @@ int main(int argc, char *argv[])
     );
     points.write(mesh, lattice);
 
-    const scalar seconds = std::chrono::duration<scalar>
-    (
-        std::chrono::steady_clock::now() - start
-    ).count();
+    const scalar seconds = start.elapsed();
     report
     (
         regions, regionCount, materialsDict.toc(), points, n,

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "physicsEffect.H"
+#include "fvMesh.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -19,6 +20,7 @@ namespace Foam
 {
     defineTypeNameAndDebug(physicsEffect, 0);
     defineRunTimeSelectionTable(physicsEffect, scene);
+    defineMemberFunctionSelectionTable(physicsEffect, haloWidth, mesh);
 }
 
 
@@ -53,6 +55,38 @@ Foam::autoPtr<Foam::physicsEffect> Foam::physicsEffect::New
     }
 
     return cstrIter()(scene);
+}
+
+
+Foam::label Foam::physicsEffect::haloWidthOf
+(
+    const word& name,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+{
+    if (!sceneConstructorTablePtr_->found(name))
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "effect",
+            name,
+            *sceneConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    auto widthIter = haloWidthmeshMemberFunctionTablePtr_->cfind(name);
+    if (!widthIter.found())
+    {
+        FatalErrorInFunction
+            << "effect " << name << " does not declare its halo width:"
+            << " add addToMemberFunctionSelectionTable(physicsEffect, "
+            << name << ", haloWidth, mesh) beside its constructor's"
+            << " registration" << exit(FatalError);
+    }
+
+    return widthIter()(mesh);
 }
 
 

@@ -12,9 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "physicsScene.H"
-#include "materialPointSoil.H"
 #include "Time.H"
-#include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -25,6 +23,52 @@ namespace Foam
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::physicsScene::build(const label i)
+{
+    if (effects_.set(i))
+    {
+        return;
+    }
+    if (building_[i])
+    {
+        FatalIOErrorInFunction(dict_)
+            << "effect " << names_[i] << " needs, through the effects it"
+            << " needs, itself: a cycle no order of construction can meet"
+            << exit(FatalIOError);
+    }
+    building_[i] = true;
+    effects_.set(i, physicsEffect::New(names_[i], *this, dict_));
+    building_[i] = false;
+}
+
+
+void Foam::physicsScene::planSteps()
+{
+    // Every stage in its order; within a stage, the effects as listed
+    DynamicList<Tuple2<sceneStage, label>> steps;
+    for (int s = 0; s <= int(sceneStage::endStep); ++s)
+    {
+        const sceneStage stage = sceneStage(s);
+        forAll(effects_, i)
+        {
+            if (effects_[i].stages().found(stage))
+            {
+                steps.append(Tuple2<sceneStage, label>(stage, i));
+            }
+        }
+    }
+    steps_.transfer(steps);
+
+    Info<< "Step:";
+    for (const Tuple2<sceneStage, label>& step : steps_)
+    {
+        Info<< ' ' << sceneStageNames[step.first()] << " ("
+            << names_[step.second()] << ")";
+    }
+    Info<< nl << endl;
+}
+
 
 void Foam::physicsScene::checkRequirements() const
 {
@@ -48,14 +92,13 @@ void Foam::physicsScene::checkRequirements() const
 
 void Foam::physicsScene::progress()
 {
-    const clock::time_point now = clock::now();
-    const scalar wall = seconds(start_, now);
-    const Time& runTime = mesh_.time();
+    const scalar wall = start_.elapsed();
+    const Time& runTime = runTime_;
 
     // Decided on wall clocks that differ between processors: agree, since
     // the report below is collective
     bool first = !projected_ && (wall > 2.0 || nSteps_ >= 50);
-    bool due = seconds(lastProgress_, now) >= progressInterval_;
+    bool due = scalar(lastProgress_.elapsed()) >= progressInterval_;
     const bool last = (nSteps_ == nStepsTotal_);
     reduce(first, orOp<bool>());
     reduce(due, orOp<bool>());
@@ -78,7 +121,7 @@ void Foam::physicsScene::progress()
 
     if (due || last)
     {
-        lastProgress_ = now;
+        lastProgress_.update();
         scalar updates = 0;
         forAll(effects_, i)
         {
@@ -105,8 +148,9 @@ void Foam::physicsScene::progress()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::physicsScene::physicsScene(fvMesh& mesh)
+Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
 :
+    runTime_(runTime),
     mesh_(mesh),
     dict_
     (
@@ -147,56 +191,28 @@ Foam::physicsScene::physicsScene(fvMesh& mesh)
 
     Info<< "Scene effects: " << names_ << nl << endl;
 
-    // The soil's shape functions reach up to 2 nodes beyond a point's cell
-    // (cubic B-splines), and the images of missing cells' nodes further:
-    // the shared lattice is built wide enough for both
-    lattice(has("soil") ? materialPointSoil::haloWidth(mesh_) : 1);
-
-    // The water and the soil first: the couplings use them
-    effects_.setSize(names_.size());
-    for (const bool phases : {true, false})
+    // The lattice every effect shares, with the widest halo they declare
+    label haloWidth = 1;
+    for (const word& name : names_)
     {
-        forAll(names_, i)
-        {
-            const bool isPhase = (names_[i] == "fluid" || names_[i] == "soil");
-            if (isPhase == phases)
-            {
-                effects_.set(i, physicsEffect::New(names_[i], *this, dict_));
-            }
-        }
+        haloWidth =
+            max(haloWidth, physicsEffect::haloWidthOf(name, mesh_, dict_));
+    }
+    lattice_.reset(new latticeMesh(mesh_, haloWidth));
+    lattice_->report(Info);
+
+    // In the order listed; an effect builds those it needs first
+    effects_.setSize(names_.size());
+    building_.setSize(names_.size(), false);
+    forAll(names_, i)
+    {
+        build(i);
     }
     checkRequirements();
-
-    // Evolution order by stage (stable)
-    {
-        DynamicList<labelPair> order;
-        DynamicList<label> stages;
-        forAll(effects_, i)
-        {
-            order.append(labelPair(i, 0));
-            stages.append(effects_[i].stage());
-            if (effects_[i].lateStage() >= 0)
-            {
-                order.append(labelPair(i, 1));
-                stages.append(effects_[i].lateStage());
-            }
-        }
-        labelList idx(identity(order.size()));
-        std::stable_sort
-        (
-            idx.begin(), idx.end(),
-            [&stages](label a, label b) { return stages[a] < stages[b]; }
-        );
-        evolveOrder_.setSize(order.size());
-        forAll(idx, k)
-        {
-            evolveOrder_[k] = order[idx[k]];
-        }
-    }
+    planSteps();
     effectTime_.setSize(effects_.size(), 0);
 
     // What the run will cost
-    const Time& runTime = mesh_.time();
     nStepsTotal_ = label
     (
         (runTime.endTime().value() - runTime.startTime().value())
@@ -225,52 +241,33 @@ Foam::physicsScene::physicsScene(fvMesh& mesh)
     }
     Info<< endl;
 
-    start_ = clock::now();
+    start_.update();
     lastProgress_ = start_;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-const Foam::latticeMesh& Foam::physicsScene::lattice(const label haloWidth)
+bool Foam::physicsScene::needsSoilAfterWater() const
 {
-    if (!lattice_.valid())
+    forAll(effects_, i)
     {
-        lattice_.reset(new latticeMesh(mesh_, haloWidth));
-        lattice_->report(Info);
+        if (effects_[i].needsSoilAfterWater())
+        {
+            return true;
+        }
     }
-    else if (lattice_->haloWidth() < haloWidth)
-    {
-        FatalErrorInFunction
-            << "The lattice was built with halo width "
-            << lattice_->haloWidth() << " but an effect needs " << haloWidth
-            << abort(FatalError);
-    }
-    return lattice_();
+    return false;
 }
 
 
 void Foam::physicsScene::evolve()
 {
-    for (const labelPair& ip : evolveOrder_)
+    for (const Tuple2<sceneStage, label>& step : steps_)
     {
-        const label i = ip.first();
-        const clock::time_point t0 = clock::now();
-        if (ip.second() == 0)
-        {
-            effects_[i].evolve();
-        }
-        else
-        {
-            effects_[i].evolveLate();
-        }
-        effectTime_[i] += seconds(t0, clock::now());
-    }
-    forAll(effects_, i)
-    {
-        const clock::time_point t0 = clock::now();
-        effects_[i].endStep();
-        effectTime_[i] += seconds(t0, clock::now());
+        const clockValue t0(clockValue::now());
+        run(step);
+        effectTime_[step.second()] += t0.elapsed();
     }
     ++nSteps_;
     progress();
@@ -279,26 +276,25 @@ void Foam::physicsScene::evolve()
 
 void Foam::physicsScene::write()
 {
-    Time& runTime = const_cast<Time&>(mesh_.time());
-    if (!runTime.writeTime())
+    if (!runTime_.writeTime())
     {
         return;
     }
     // The effects' outputs, then the registered fields (U, p, rho, ...):
     // all counted as writing in the run's cost
-    const clock::time_point t0 = clock::now();
+    const clockValue t0(clockValue::now());
     forAll(effects_, i)
     {
         effects_[i].write();
     }
-    runTime.write();
-    writeTime_ += seconds(t0, clock::now());
+    runTime_.write();
+    writeTime_ += t0.elapsed();
 }
 
 
 void Foam::physicsScene::summary() const
 {
-    const scalar wall = seconds(start_, clock::now());
+    const scalar wall = start_.elapsed();
     scalar updates = 0;
     forAll(effects_, i)
     {
@@ -331,32 +327,28 @@ void Foam::physicsScene::summary() const
 
 void Foam::physicsScene::estimate()
 {
-    Time& runTime = const_cast<Time&>(mesh_.time());
-    const clock::time_point t0 = clock::now();
+    const clockValue t0(clockValue::now());
     label n = 0;
-    while (runTime.run() && n < 50)
+    while (runTime_.run() && n < 50)
     {
-        ++runTime;
-        for (const labelPair& ip : evolveOrder_)
+        ++runTime_;
+        // (not endStep: its per-step outputs would write)
+        for (const Tuple2<sceneStage, label>& step : steps_)
         {
-            if (ip.second() == 0)
+            if (step.first() != sceneStage::endStep)
             {
-                effects_[ip.first()].evolve();
-            }
-            else
-            {
-                effects_[ip.first()].evolveLate();
+                run(step);
             }
         }
         ++n;
-        bool enough = seconds(t0, clock::now()) > 3.0;
+        bool enough = scalar(t0.elapsed()) > 3.0;
         reduce(enough, orOp<bool>());
         if (enough)
         {
             break;
         }
     }
-    const scalar wall = seconds(t0, clock::now());
+    const scalar wall = t0.elapsed();
     const scalar perStep = wall/max(n, label(1));
     scalar memory = 0;
     forAll(effects_, i)

@@ -10,7 +10,7 @@
 #     outside the two phases acts on them, so the total momentum is
 #     conserved exactly and the kinetic energy can only fall (drag and
 #     viscosity dissipate; the elastic and acoustic energies start at 0).
-#     Reads postProcessing/momentumBalance/momentum.dat (one row per step:
+#     Reads postProcessing/momentumBalance/0/momentum.dat (one row per step:
 #     time waterX waterY waterZ soilX soilY soilZ totalX totalY totalZ),
 #     the initial and final clouds, the final fields and the log. Checks:
 #     - one row per lattice step, starting at t = 0 with the water at rest
@@ -49,7 +49,7 @@ scale = np.linalg.norm(P0)
 KE0 = 0.5 * (m0 * (v0 ** 2).sum(axis=1)).sum()
 
 ok = True
-path = os.path.join(case, 'postProcessing', 'momentumBalance', 'momentum.dat')
+path = os.path.join(case, 'postProcessing', 'momentumBalance', '0', 'momentum.dat')
 d = np.atleast_2d(np.loadtxt(path, comments='#'))
 water, soil, total = d[:, 1:4], d[:, 4:7], d[:, 7:10]
 ok &= foamio.check(d.shape[0] == nSteps + 1 and abs(d[0, 0]) < 1e-12

@@ -18,6 +18,7 @@ License
 #include "porousFlowEffect.H"
 #include "dragEffect.H"
 #include "addToRunTimeSelectionTable.H"
+#include "addToMemberFunctionSelectionTable.H"
 #include "volFields.H"
 
 namespace Foam
@@ -26,6 +27,7 @@ namespace physicsEffects
 {
     defineTypeNameAndDebug(buoyancy, 0);
     addToRunTimeSelectionTable(physicsEffect, buoyancy, scene);
+    addToMemberFunctionSelectionTable(physicsEffect, buoyancy, haloWidth, mesh);
 }
 }
 
@@ -182,7 +184,7 @@ void Foam::physicsEffects::buoyancy::balanced
 }
 
 
-void Foam::physicsEffects::buoyancy::evolve()
+void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
 {
     const latticeMesh& lattice = fluid_.lattice();
     const label nBox = lattice.nBox();
@@ -226,9 +228,6 @@ void Foam::physicsEffects::buoyancy::evolve()
 
     const scalar toNewton =
         lattice.cellVolume()/fluid_.units().forceDensityToLattice();
-    scalarList& Fx = fluid_.forceX();
-    scalarList& Fy = fluid_.forceY();
-    scalarList& Fz = fluid_.forceZ();
     soilForce_ = Zero;
     maxForce_ = 0;
     for (const label n : cellNode)
@@ -284,9 +283,7 @@ void Foam::physicsEffects::buoyancy::evolve()
     }
     for (const label n : cellNode)
     {
-        Fx[n] = X[n].x();
-        Fy[n] = X[n].y();
-        Fz[n] = X[n].z();
+        fluid_.setForce(n, X[n]);
     }
 
     soil_.addNodeForces(soilForce_);

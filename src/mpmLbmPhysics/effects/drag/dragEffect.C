@@ -15,7 +15,9 @@ License
 #include "physicsScene.H"
 #include "fluidEffect.H"
 #include "soilEffect.H"
+#include "dragRelaxation.H"
 #include "addToRunTimeSelectionTable.H"
+#include "addToMemberFunctionSelectionTable.H"
 
 namespace Foam
 {
@@ -23,6 +25,7 @@ namespace physicsEffects
 {
     defineTypeNameAndDebug(drag, 0);
     addToRunTimeSelectionTable(physicsEffect, drag, scene);
+    addToMemberFunctionSelectionTable(physicsEffect, drag, haloWidth, mesh);
 }
 }
 
@@ -93,10 +96,9 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
     dict_(dragPropertiesIO(scene.mesh())),
     coupling_(couplingType::oneWay),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
-    soil_(scene.effect<physicsEffects::soil>("soil").mpm()),
+    soil_(scene.effect<physicsEffects::soil>("soil")),
     model_(dragModel::New(dragDict(dict_, fluid_))),
-    maxForce_(0),
-    writeMomentum_(false)
+    maxForce_(0)
 {
     const word type(dict_.get<word>("drag"));
     if (!couplingTypeNames.found(type))
@@ -110,25 +112,32 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
 
     if (twoWay())
     {
-        scene.effect<physicsEffects::soil>("soil").advanceAfterWater();
         nodeForce_.setSize(fluid_.lattice().nBox(), Zero);
-        writeMomentum_ = dict_.getOrDefault<bool>("writeMomentum", false);
-        if (writeMomentum_)
+        if (dict_.getOrDefault<bool>("writeMomentum", false))
         {
-            const fileName dir
+            dictionary fileDict;
+            fileDict.add("writePrecision", 17);
+            momentumFile_.reset
             (
-                scene.mesh().time().globalPath()/"postProcessing"
-               /"momentumBalance"
+                new functionObjects::writeFile
+                (
+                    scene.mesh(), "momentumBalance", "momentum", fileDict
+                )
             );
-            if (Pstream::master())
+            OFstream& os = momentumFile_->file();
+            momentumFile_->writeHeader
+            (
+                os, "Momentum of the water, the soil and both [kg m/s]"
+            );
+            momentumFile_->writeCommented(os, "Time");
+            for (const char* phase : {"water", "soil", "total"})
             {
-                mkDir(dir);
-                momentumFile_.reset(new OFstream(dir/"momentum.dat"));
-                momentumFile_()
-                    << "# time waterX waterY waterZ soilX soilY soilZ"
-                    << " totalX totalY totalZ [kg m/s]" << nl;
-                momentumFile_().precision(17);
+                for (const char* xyz : {"X", "Y", "Z"})
+                {
+                    momentumFile_->writeTabbed(os, word(phase) + xyz);
+                }
             }
+            os  << endl;
             writeMomentum();
         }
     }
@@ -147,27 +156,56 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::physicsEffects::drag::writeMomentum()
+Foam::sceneStageList Foam::physicsEffects::drag::stages() const
 {
-    const vector water = fluid_.momentum();
-    const vector soil = soil_.momentum();
+    sceneStageList joined({sceneStage::exchange});
+    if (twoWay())
+    {
+        joined.append(sceneStage::lateExchange);
+    }
     if (momentumFile_.valid())
     {
-        OFstream& os = momentumFile_();
-        os  << scene_.mesh().time().value();
-        for (const vector& v : {water, soil, water + soil})
-        {
-            os  << ' ' << v.x() << ' ' << v.y() << ' ' << v.z();
-        }
-        os  << nl;
-        os.flush();
+        joined.append(sceneStage::endStep);
+    }
+    return joined;
+}
+
+
+void Foam::physicsEffects::drag::evolve(const sceneStage stage)
+{
+    switch (stage)
+    {
+        case sceneStage::exchange: exchange(); break;
+        case sceneStage::lateExchange: lateExchange(); break;
+        case sceneStage::endStep: writeMomentum(); break;
+        default: break;
     }
 }
 
 
-void Foam::physicsEffects::drag::evolve()
+void Foam::physicsEffects::drag::writeMomentum()
 {
-    soil_.nodalFields(phi_, soilVelocity_);
+    // Collective (the momenta are sums over the processors)
+    const vector water = fluid_.momentum();
+    const vector soil = soil_.mpm().momentum();
+    if (momentumFile_->writeToFile())
+    {
+        OFstream& os = momentumFile_->file();
+        momentumFile_->writeCurrentTime(os);
+        for (const vector& v : {water, soil, water + soil})
+        {
+            os  << tab << v.x() << tab << v.y() << tab << v.z();
+        }
+        os  << endl;
+    }
+}
+
+
+void Foam::physicsEffects::drag::exchange()
+{
+    const scalarList& phi = soil_.solidFraction();
+    const List<vector>& soilVelocity = soil_.nodeVelocity();
+    const scalarList& soilMass = soil_.nodeMass();
     fluid_.nodalVelocity(fluidVelocity_, true);
 
     const lbmUnits& units = fluid_.units();
@@ -175,118 +213,56 @@ void Foam::physicsEffects::drag::evolve()
     const scalar rhoF = units.rho0();
     const scalar Vnode = fluid_.lattice().cellVolume();
     const bool porous = fluid_.porous();
-    const scalarList& soilMass = soil_.nodeMass();
-
-    scalarList& kappa = fluid_.relaxCoefficient();
-    scalarList& s = fluid_.relaxS();
-    scalarList& Ux = fluid_.relaxUx();
-    scalarList& Uy = fluid_.relaxUy();
-    scalarList& Uz = fluid_.relaxUz();
-
-    // Porous flow: the water fills the soil's pores
-    if (porous)
-    {
-        scalarList& eps = porosity_;
-        eps.setSize(phi_.size());
-        forAll(eps, n)
-        {
-            eps[n] = 1 - phi_[n];
-        }
-        if (fluid_.displacement())
-        {
-            // The fall of the porosity the soil's coming step will make,
-            // -dt div(phi v_s) (central differences; no flux through a
-            // wall), given to the water ahead of it
-            const latticeMesh& lattice = fluid_.lattice();
-            const List<unsigned char>& kind = lattice.kind();
-            const labelVector& stride = lattice.stride();
-            const scalar c = dt/(2*lattice.dx());
-            predictedFall_.setSize(phi_.size());
-            predictedFall_ = 0;
-            for (const label n : lattice.cellNode())
-            {
-                scalar div = 0;
-                for (direction a = 0; a < lattice.nDim(); ++a)
-                {
-                    const scalar own = phi_[n]*soilVelocity_[n][a];
-                    const label up = n + stride[a];
-                    const label down = n - stride[a];
-                    const scalar fUp =
-                        kind[up] == latticeMesh::WALL
-                      ? -own : phi_[up]*soilVelocity_[up][a];
-                    const scalar fDown =
-                        kind[down] == latticeMesh::WALL
-                      ? -own : phi_[down]*soilVelocity_[down][a];
-                    div += fUp - fDown;
-                }
-                predictedFall_[n] = -c*div;
-            }
-            fluid_.setPorosity(eps, &predictedFall_);
-        }
-        else
-        {
-            fluid_.setPorosity(eps);
-        }
-    }
 
     maxForce_ = 0;
     for (const label n : fluid_.lattice().cellNode())
     {
-        if (phi_[n] <= 0)
+        if (phi[n] <= 0)
         {
-            kappa[n] = 0;
-            s[n] = 1;
-            Ux[n] = Uy[n] = Uz[n] = 0;
+            fluid_.clearRelaxation(n);
             continue;
         }
 
         // The water's mass per volume (porous flow: the pores' share) and
         // its velocity in the pores (the lattice's is superficial there)
-        const scalar eps = 1 - phi_[n];
+        const scalar eps = 1 - phi[n];
         const scalar mF = porous ? eps*rhoF : rhoF;
         const vector vF =
             porous ? fluidVelocity_[n]/eps : fluidVelocity_[n];
-        const vector slip = soilVelocity_[n] - vF;
-        const scalar beta = model_->beta(phi_[n], mag(slip));
+        const vector slip = soilVelocity[n] - vF;
+        const scalar beta = model_->beta(phi[n], mag(slip));
         const scalar a = beta*dt/mF;
 
-        scalar k;
-        if (twoWay())
-        {
-            // Relative velocity decays by exp(-beta dt (1/mS + 1/mF)); the
-            // water takes the soil's share mS/(mS + mF) of it
-            const scalar mS = soilMass[n]/Vnode;
-            k = -std::expm1(-a*(1 + mF/mS))*mS/(mS + mF);
-        }
-        else
-        {
-            k = -std::expm1(-a);
-        }
-        kappa[n] = k;
-        s[n] = a > SMALL ? k/a : 1;
+        const dragRelaxation relax =
+            twoWay()
+          ? dragRelaxation::twoWay(a, soilMass[n]/Vnode, mF)
+          : dragRelaxation::oneWay(a);
 
         // (porous: towards the superficial velocity eps v_s)
-        const vector Ur =
-            units.toLattice(porous ? eps*soilVelocity_[n] : soilVelocity_[n]);
-        Ux[n] = Ur.x();
-        Uy[n] = Ur.y();
-        Uz[n] = Ur.z();
+        fluid_.setRelaxation
+        (
+            n,
+            relax.kappa(),
+            relax.s(),
+            units.toLattice(porous ? eps*soilVelocity[n] : soilVelocity[n])
+        );
         maxForce_ = max(maxForce_, beta*mag(slip));
     }
 }
 
 
-void Foam::physicsEffects::drag::evolveLate()
+void Foam::physicsEffects::drag::lateExchange()
 {
     // The impulse density the lattice gave the water at each node this
     // step, reversed, as a force on the node over the step [N]
+    const scalarList& phi = soil_.solidFraction();
     const lbmUnits& units = fluid_.units();
     const scalar toForce =
         fluid_.lattice().cellVolume()/units.forceDensityToLattice();
     nodeForce_ = Zero;
     for (const label n : fluid_.lattice().cellNode())
     {
-        if (phi_[n] > 0)
+        if (phi[n] > 0)
         {
             nodeForce_[n] = -toForce*fluid_.dragImpulse(n);
         }
@@ -295,17 +271,9 @@ void Foam::physicsEffects::drag::evolveLate()
 }
 
 
-void Foam::physicsEffects::drag::endStep()
-{
-    if (writeMomentum_)
-    {
-        writeMomentum();
-    }
-}
-
-
 Foam::scalar Foam::physicsEffects::drag::memoryBytes() const
 {
+    // With the soil's solid fraction and velocity per node it maps
     return
         scalar(fluid_.lattice().nBox())
        *(sizeof(scalar) + (twoWay() ? 3 : 2)*sizeof(vector));

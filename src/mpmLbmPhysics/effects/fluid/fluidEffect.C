@@ -14,6 +14,7 @@ License
 #include "fluidEffect.H"
 #include "physicsScene.H"
 #include "addToRunTimeSelectionTable.H"
+#include "addToMemberFunctionSelectionTable.H"
 
 namespace Foam
 {
@@ -21,6 +22,7 @@ namespace physicsEffects
 {
     defineTypeNameAndDebug(fluid, 0);
     addToRunTimeSelectionTable(physicsEffect, fluid, scene);
+    addToMemberFunctionSelectionTable(physicsEffect, fluid, haloWidth, mesh);
 }
 }
 
@@ -28,11 +30,11 @@ namespace physicsEffects
 Foam::physicsEffects::fluid::fluid(physicsScene& scene)
 :
     physicsEffect(scene),
-    lbm_(scene.lattice(1))
+    lbm_(scene.lattice())
 {}
 
 
-void Foam::physicsEffects::fluid::evolve()
+void Foam::physicsEffects::fluid::evolve(const sceneStage)
 {
     lbm_.step();
 }

@@ -18,6 +18,7 @@ License
 #include "soilEffect.H"
 #include "uniformDimensionedFields.H"
 #include "addToRunTimeSelectionTable.H"
+#include "addToMemberFunctionSelectionTable.H"
 
 namespace Foam
 {
@@ -25,6 +26,7 @@ namespace physicsEffects
 {
     defineTypeNameAndDebug(gravity, 0);
     addToRunTimeSelectionTable(physicsEffect, gravity, scene);
+    addToMemberFunctionSelectionTable(physicsEffect, gravity, haloWidth, mesh);
 }
 }
 

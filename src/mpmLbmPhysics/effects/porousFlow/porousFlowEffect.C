@@ -16,7 +16,9 @@ License
 #include "fluidEffect.H"
 #include "soilEffect.H"
 #include "materialPointSoil.H"
+#include "dragRelaxation.H"
 #include "addToRunTimeSelectionTable.H"
+#include "addToMemberFunctionSelectionTable.H"
 #include <cstdio>
 
 namespace Foam
@@ -25,6 +27,10 @@ namespace physicsEffects
 {
     defineTypeNameAndDebug(porousFlow, 0);
     addToRunTimeSelectionTable(physicsEffect, porousFlow, scene);
+    addToMemberFunctionSelectionTable
+    (
+        physicsEffect, porousFlow, haloWidth, mesh
+    );
 }
 }
 
@@ -54,6 +60,7 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
     ),
     medium_(mediumType::soil),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
+    soil_(nullptr),
     porosity_(1),
     permeability_(GREAT),
     forchheimer_(0)
@@ -117,7 +124,8 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
     }
     else
     {
-        // The drag maps the soil's porosity onto the lattice each step
+        // The soil's porosity is mapped onto the lattice each step
+        soil_ = &scene.effect<physicsEffects::soil>("soil");
         fluid_.enablePorosity();
         Info<< ": porosity 1 - phi of the soil, resistance of the drag";
         const bool displacement =
@@ -205,8 +213,6 @@ void Foam::physicsEffects::porousFlow::setResistance()
     const scalar forch =
         porosity_*forchheimer_/std::sqrt(permeability_);
 
-    scalarList& kappa = fluid_.relaxCoefficient();
-    scalarList& s = fluid_.relaxS();
     if (forch > 0)
     {
         fluid_.nodalVelocity(velocity_, true);
@@ -216,16 +222,77 @@ void Foam::physicsEffects::porousFlow::setResistance()
         // (|u| superficial, as the lattice's velocity)
         const scalar a =
             dt*(darcy + (forch > 0 ? forch*mag(velocity_[n]) : 0));
-        kappa[n] = -std::expm1(-a);
-        s[n] = a > SMALL ? kappa[n]/a : 1;
+        const dragRelaxation relax = dragRelaxation::oneWay(a);
+
+        // (the matrix is at rest)
+        fluid_.setRelaxation(n, relax.kappa(), relax.s(), Zero);
     }
-    // The matrix is at rest: the relaxation targets stay zero
 }
 
 
-void Foam::physicsEffects::porousFlow::evolve()
+void Foam::physicsEffects::porousFlow::mapPorosity()
 {
-    if (medium_ == mediumType::fixed && forchheimer_ > 0)
+    const scalarList& phi = soil_->solidFraction();
+    soilPorosity_.setSize(phi.size());
+    forAll(soilPorosity_, n)
+    {
+        soilPorosity_[n] = 1 - phi[n];
+    }
+    if (!fluid_.displacement())
+    {
+        fluid_.setPorosity(soilPorosity_);
+        return;
+    }
+
+    // The fall of the porosity the soil's coming step will make,
+    // -dt div(phi v_s) (central differences; no flux through a wall),
+    // given to the water ahead of it
+    const List<vector>& soilVelocity = soil_->nodeVelocity();
+    const latticeMesh& lattice = fluid_.lattice();
+    const List<unsigned char>& kind = lattice.kind();
+    const labelVector& stride = lattice.stride();
+    const scalar c = fluid_.units().dt()/(2*lattice.dx());
+    predictedFall_.setSize(phi.size());
+    predictedFall_ = 0;
+    for (const label n : lattice.cellNode())
+    {
+        scalar div = 0;
+        for (direction a = 0; a < lattice.nDim(); ++a)
+        {
+            const scalar own = phi[n]*soilVelocity[n][a];
+            const label up = n + stride[a];
+            const label down = n - stride[a];
+            const scalar fUp =
+                kind[up] == latticeMesh::WALL
+              ? -own : phi[up]*soilVelocity[up][a];
+            const scalar fDown =
+                kind[down] == latticeMesh::WALL
+              ? -own : phi[down]*soilVelocity[down][a];
+            div += fUp - fDown;
+        }
+        predictedFall_[n] = -c*div;
+    }
+    fluid_.setPorosity(soilPorosity_, &predictedFall_);
+}
+
+
+Foam::sceneStageList Foam::physicsEffects::porousFlow::stages() const
+{
+    if (medium_ == mediumType::soil || forchheimer_ > 0)
+    {
+        return sceneStageList({sceneStage::porosity});
+    }
+    return sceneStageList();
+}
+
+
+void Foam::physicsEffects::porousFlow::evolve(const sceneStage)
+{
+    if (medium_ == mediumType::soil)
+    {
+        mapPorosity();
+    }
+    else
     {
         setResistance();
     }

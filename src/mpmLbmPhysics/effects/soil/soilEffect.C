@@ -14,6 +14,7 @@ License
 #include "soilEffect.H"
 #include "physicsScene.H"
 #include "addToRunTimeSelectionTable.H"
+#include "addToMemberFunctionSelectionTable.H"
 
 namespace Foam
 {
@@ -21,6 +22,7 @@ namespace physicsEffects
 {
     defineTypeNameAndDebug(soil, 0);
     addToRunTimeSelectionTable(physicsEffect, soil, scene);
+    addToMemberFunctionSelectionTable(physicsEffect, soil, haloWidth, mesh);
 }
 }
 
@@ -28,17 +30,43 @@ namespace physicsEffects
 Foam::physicsEffects::soil::soil(physicsScene& scene)
 :
     physicsEffect(scene),
-    mpm_(scene.lattice(2)),
-    afterWater_(false)
+    mpm_(scene.lattice()),
+    mapped_(false)
 {}
 
 
-void Foam::physicsEffects::soil::evolve()
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::physicsEffects::soil::map()
+{
+    if (!mapped_)
+    {
+        mpm_.nodalFields(solidFraction_, nodeVelocity_);
+        mapped_ = true;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::sceneStageList Foam::physicsEffects::soil::stages() const
+{
+    return sceneStageList
+    ({
+        scene_.needsSoilAfterWater()
+      ? sceneStage::soilAfterWater
+      : sceneStage::soilStep
+    });
+}
+
+
+void Foam::physicsEffects::soil::evolve(const sceneStage)
 {
     mpm_.advance(scene_.mesh().time().deltaTValue());
 
-    // The couplings' forces on the points held for this step only
+    // The couplings' forces were for this step
     mpm_.clearPointForces();
+    mapped_ = false;
 }
 
 

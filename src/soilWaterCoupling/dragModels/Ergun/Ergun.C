@@ -38,20 +38,4 @@ Foam::dragModels::Ergun::Ergun(const dictionary& dict)
 {}
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-bool Foam::dragModels::Ergun::affineInSlip
-(
-    const scalar phi,
-    scalar& beta0,
-    scalar& beta1
-) const
-{
-    const scalar p = clipPhi(phi);
-    beta0 = viscous_*p*p/(1 - p);
-    beta1 = inertial_*p;
-    return true;
-}
-
-
 // ************************************************************************* //

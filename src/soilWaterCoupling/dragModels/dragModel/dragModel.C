@@ -119,25 +119,6 @@ Foam::autoPtr<Foam::dragModel> Foam::dragModel::New(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::dragModel::affineInSlip
-(
-    const scalar phi,
-    scalar& beta0,
-    scalar& beta1
-) const
-{
-    if (linear())
-    {
-        beta0 = beta(phi, 0);
-        beta1 = 0;
-        return true;
-    }
-    beta0 = 0;
-    beta1 = 0;
-    return false;
-}
-
-
 Foam::scalar Foam::dragModel::permeability(const scalar phi) const
 {
     const scalar n = 1 - clipPhi(phi);
