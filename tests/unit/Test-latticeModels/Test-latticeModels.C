@@ -383,7 +383,6 @@ static void testDrag(const word& modelName, const velocitySet& vs)
     dict.add("collisionModel", modelName);
     autoPtr<collisionModel> model = collisionModel::New(dict, vs);
     const word n = modelName + " " + vs.type();
-    const label Q = vs.Q();
     const label D = vs.D();
     const scalar omega = 1.0/0.8;
     const scalar rho = 1.02;

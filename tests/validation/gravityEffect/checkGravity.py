@@ -10,7 +10,7 @@
 #     phases from outside: the total momentum gained between steps is
 #     M g t exactly, M the mass of PHASES (water, soil or water+soil: the water's
 #     sum rho V at the end, conserved, and the soil's sum m_p). Reads
-#     constant/g, postProcessing/momentumBalance/momentum.dat (time, water,
+#     constant/g, postProcessing/momentumBalance/0/momentum.dat (time, water,
 #     soil, total), the cloud at 0, rho at the end and V at 0. Checks every
 #     row against the first step's (the row of t = 0 is written when the
 #     drag is built, which may be before the gravity effect gives the water
@@ -36,7 +36,7 @@ mWater = (foamio.read(case, t, 'rho') * foamio.read(case, '0', 'V')).sum()
 masses = {'water': mWater, 'soil': mSoil, 'water+soil': mWater + mSoil}
 
 d = np.atleast_2d(np.loadtxt(os.path.join(case, 'postProcessing', 'momentumBalance',
-                                          'momentum.dat'), comments='#'))
+                                          '0', 'momentum.dat'), comments='#'))
 time, total = d[1:, 0], d[1:, 7:10]
 gained = total - total[0]
 scale = np.linalg.norm(masses[phases] * g * time[-1])

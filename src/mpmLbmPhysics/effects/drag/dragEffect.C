@@ -16,6 +16,7 @@ License
 #include "fluidEffect.H"
 #include "soilEffect.H"
 #include "dragRelaxation.H"
+#include "selectEntry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "addToMemberFunctionSelectionTable.H"
 
@@ -94,20 +95,12 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
 :
     physicsEffect(scene),
     dict_(dragPropertiesIO(scene.mesh())),
-    coupling_(couplingType::oneWay),
+    coupling_(selectEntry(couplingTypeNames, "drag", dict_)),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(scene.effect<physicsEffects::soil>("soil")),
     model_(dragModel::New(dragDict(dict_, fluid_))),
     maxForce_(0)
 {
-    const word type(dict_.get<word>("drag"));
-    if (!couplingTypeNames.found(type))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "drag " << type << " is not allowed: choose one of "
-            << couplingTypeNames.sortedToc() << exit(FatalIOError);
-    }
-    coupling_ = couplingTypeNames[type];
     fluid_.enableForceField();
 
     if (twoWay())

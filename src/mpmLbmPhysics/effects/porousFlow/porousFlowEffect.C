@@ -17,6 +17,7 @@ License
 #include "soilEffect.H"
 #include "materialPointSoil.H"
 #include "dragRelaxation.H"
+#include "selectEntry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "addToMemberFunctionSelectionTable.H"
 #include <cstdio>
@@ -58,22 +59,13 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
             IOobject::NO_WRITE
         )
     ),
-    medium_(mediumType::soil),
+    medium_(selectEntry(mediumTypeNames, "medium", dict_)),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(nullptr),
     porosity_(1),
     permeability_(GREAT),
     forchheimer_(0)
 {
-    const word type(dict_.get<word>("medium"));
-    if (!mediumTypeNames.found(type))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "medium " << type << " is not allowed: choose one of "
-            << mediumTypeNames.sortedToc() << exit(FatalIOError);
-    }
-    medium_ = mediumTypeNames[type];
-
     if (fluid_.smagorinsky() > 0)
     {
         FatalIOErrorInFunction(dict_)
@@ -82,7 +74,7 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
             << " in fluidProperties): set it to 0" << exit(FatalIOError);
     }
 
-    Info<< "Porous flow (Guo & Zhao 2002): medium " << type;
+    Info<< "Porous flow (Guo & Zhao 2002): medium " << mediumTypeNames[medium_];
     if (medium_ == mediumType::fixed)
     {
         if (scene.has("soil"))
