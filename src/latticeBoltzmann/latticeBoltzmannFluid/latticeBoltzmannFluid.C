@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "latticeBoltzmannFluid.H"
+#include "nodeFieldIO.H"
 #include "lbmKernel.H"
 #include "vector2D.H"
 
@@ -139,24 +140,14 @@ void Foam::latticeBoltzmannFluid::initialise()
         scalarList& f = current();
         for (label q = 0; q < Q; ++q)
         {
-            const volScalarField fq(popIO(q, IOobject::MUST_READ), mesh_);
-            forAll(cellNode, celli)
-            {
-                f[q*nBox + cellNode[celli]] = fq[celli];
-            }
+            readNodeField(lattice_, "lbmF" + Foam::name(q), f.data() + q*nBox);
         }
 
         // Porous flow: the porosity the populations were made with
-        IOobject porosityIO(popIO(0, IOobject::MUST_READ));
-        porosityIO.rename("lbmPorosity");
-        if (porosityIO.typeHeaderOk<volScalarField>(true))
+        if (foundNodeField(lattice_, "lbmPorosity"))
         {
-            const volScalarField eps(porosityIO, mesh_);
             writtenPorosity_.setSize(nBox, 1.0);
-            forAll(cellNode, celli)
-            {
-                writtenPorosity_[cellNode[celli]] = eps[celli];
-            }
+            readNodeField(lattice_, "lbmPorosity", writtenPorosity_.data());
         }
     }
     else
@@ -862,7 +853,8 @@ Foam::scalar Foam::latticeBoltzmannFluid::memoryBytes() const
 {
     return returnReduce
     (
-        scalar(sizeof(scalar))*(fA_.size() + fB_.size() + 11*Fx_.size() + porosity_.size()),
+        scalar(sizeof(scalar))
+       *(fA_.size() + fB_.size() + 11*Fx_.size() + porosity_.size()),
         sumOp<scalar>()
     );
 }
@@ -945,44 +937,6 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
 }
 
 
-void Foam::latticeBoltzmannFluid::writeNodeField
-(
-    const word& name,
-    const scalar* nodeValues
-) const
-{
-    // Binary, at full precision whatever the case's writeFormat: a restart
-    // reads back exactly what the run held
-    volScalarField fld
-    (
-        IOobject
-        (
-            name,
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_,
-        dimensionedScalar(dimless, Zero)
-    );
-    const labelList& cellNode = lattice_.cellNode();
-    scalarField& values = fld.primitiveFieldRef();
-    forAll(cellNode, celli)
-    {
-        values[celli] = nodeValues[cellNode[celli]];
-    }
-    fld.writeObject
-    (
-        IOstream::BINARY,
-        IOstream::currentVersion,
-        mesh_.time().writeCompression(),
-        true
-    );
-}
-
-
 void Foam::latticeBoltzmannFluid::writePopulations() const
 {
     const label Q = velocitySet_->Q();
@@ -990,7 +944,7 @@ void Foam::latticeBoltzmannFluid::writePopulations() const
     const scalarList& f = current();
     for (label q = 0; q < Q; ++q)
     {
-        writeNodeField("lbmF" + Foam::name(q), f.cdata() + q*nBox);
+        writeNodeField(lattice_, "lbmF" + Foam::name(q), f.cdata() + q*nBox);
     }
 
     if (displacement_)
@@ -999,6 +953,7 @@ void Foam::latticeBoltzmannFluid::writePopulations() const
         // displacement source from it)
         writeNodeField
         (
+            lattice_,
             "lbmPorosity",
             (heldPorosity_.size() ? heldPorosity_ : porosity_).cdata()
         );

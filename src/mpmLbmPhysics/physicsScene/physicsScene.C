@@ -38,8 +38,23 @@ void Foam::physicsScene::build(const label i)
             << exit(FatalIOError);
     }
     building_[i] = true;
+    buildStack_.append(i);
     effects_.set(i, physicsEffect::New(names_[i], *this, dict_));
+    buildStack_.remove();
     building_[i] = false;
+}
+
+
+void Foam::physicsScene::missingEffect(const word& name) const
+{
+    const word by =
+        buildStack_.size() ? names_[buildStack_.last()] : word("the scene");
+    FatalIOErrorInFunction(dict_)
+        << "effect " << by << " needs effect " << name
+        << ", which the scene does not select." << nl
+        << "    effects " << names_ << ";" << nl
+        << "    Add " << name << " to the list or remove " << by << "."
+        << exit(FatalIOError);
 }
 
 

@@ -1,0 +1,717 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "latticeAdvectionDiffusion.H"
+#include "nodeFieldIO.H"
+#include "inletOutletFvPatchFields.H"
+#include "emptyPolyPatch.H"
+#include "IFstream.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(latticeAdvectionDiffusion, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- Direction q (1..2d): its axis and sign
+inline label axisOf(const label q)
+{
+    return (q - 1)/2;
+}
+
+inline scalar signOf(const label q)
+{
+    return (q % 2) ? 1.0 : -1.0;
+}
+
+inline label oppositeOf(const label q)
+{
+    return (q % 2) ? q + 1 : q - 1;
+}
+
+
+//- What one step of the kernel found
+struct transportStats
+{
+    scalar sum = 0;
+    scalar sourced = 0;
+    scalar v2Max = 0;
+    scalar PhiMin = GREAT;
+    label limited = 0;
+};
+
+
+//- Pull, BGK collision towards the equilibrium of the class description,
+//  positivity limit and source, over the runs of owned nodes. D: lattice
+//  dimension (2: D2Q5, 3: D3Q7).
+template<int D>
+void streamCollide
+(
+    const scalar* gOld,
+    scalar* gNew,
+    const label nBox,
+    const label* offset,
+    const List<latticeMesh::nodeRun>& runs,
+    const vector* u,
+    const scalar* porosity,
+    const scalar* source,
+    const scalar omega,
+    const scalar cs2,
+    transportStats& st
+)
+{
+    constexpr int Q = 2*D + 1;
+    const scalar w0 = 1 - D*cs2;
+    const scalar wi = 0.5*cs2;
+
+    for (const latticeMesh::nodeRun& run : runs)
+    {
+        for (label n = run[0]; n < run[1]; ++n)
+        {
+            scalar g[Q];
+            scalar Phi = 0;
+            for (int q = 0; q < Q; ++q)
+            {
+                g[q] = gOld[q*nBox + n - offset[q]];
+                Phi += g[q];
+            }
+
+            const scalar n1 = porosity ? 1/porosity[n] : 1;
+            scalar v[D];
+            scalar v2 = 0;
+            for (int a = 0; a < D; ++a)
+            {
+                v[a] = u[n][a]*n1;
+                v2 += v[a]*v[a];
+            }
+
+            scalar geq[Q];
+            geq[0] = Phi*(w0 - v2);
+            for (int a = 0; a < D; ++a)
+            {
+                const scalar even = 0.5*Phi*(cs2 + v[a]*v[a]);
+                geq[2*a + 1] = even + 0.5*Phi*v[a];
+                geq[2*a + 2] = even - 0.5*Phi*v[a];
+            }
+
+            bool negative = false;
+            for (int q = 0; q < Q; ++q)
+            {
+                g[q] += omega*(geq[q] - g[q]);
+                negative = negative || g[q] < 0;
+            }
+            if (negative)
+            {
+                // Over-relaxation would make a population negative: relax
+                // fully (omega = 1), which conserves Phi and keeps every
+                // population non-negative while |v|^2 <= w0
+                for (int q = 0; q < Q; ++q)
+                {
+                    g[q] = geq[q];
+                }
+                ++st.limited;
+            }
+
+            if (source && source[n] != 0)
+            {
+                const scalar S = source[n];
+                if (S > 0)
+                {
+                    g[0] += w0*S;
+                    for (int q = 1; q < Q; ++q)
+                    {
+                        g[q] += wi*S;
+                    }
+                    Phi += S;
+                    st.sourced += S;
+                }
+                else if (Phi > 0)
+                {
+                    // Removal: the same fraction of every population, at
+                    // most what the node holds
+                    const scalar removed = min(-S, Phi);
+                    const scalar keep = 1 - removed/Phi;
+                    for (int q = 0; q < Q; ++q)
+                    {
+                        g[q] *= keep;
+                    }
+                    Phi -= removed;
+                    st.sourced -= removed;
+                }
+            }
+
+            for (int q = 0; q < Q; ++q)
+            {
+                gNew[q*nBox + n] = g[q];
+            }
+            st.sum += Phi;
+            st.v2Max = max(st.v2Max, v2);
+            st.PhiMin = min(st.PhiMin, Phi);
+        }
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::latticeAdvectionDiffusion::setRelaxation(const dictionary& dict)
+{
+    D_ = dict.get<scalar>("D");
+    if (!(D_ > 0) || !std::isfinite(D_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "D " << D_ << ": the diffusivity of " << C_.name()
+            << " [m2/s] must be positive and finite (the lattice scheme"
+            << " needs tau = 1/2 + D dt/(cs2 dx^2) > 1/2)"
+            << exit(FatalIOError);
+    }
+
+    const scalar dx = units_.dx();
+    const scalar dt = units_.dt();
+    tau_ = 0.5 + D_*dt/(cs2_*dx*dx);
+}
+
+
+void Foam::latticeAdvectionDiffusion::buildLinks
+(
+    const lbmBoundaries& water,
+    const volVectorField& U
+)
+{
+    const fvMesh& mesh = lattice_.mesh();
+    const polyBoundaryMesh& patches = mesh.boundaryMesh();
+    const wordList allowed({"fixedValue", "zeroGradient", "inletOutlet"});
+
+    // Every patch's type first, whether this processor has links on it
+    forAll(patches, patchi)
+    {
+        const polyPatch& pp = patches[patchi];
+        const word type = C_.boundaryField()[patchi].type();
+        if (pp.coupled() || isA<emptyPolyPatch>(pp) || allowed.found(type))
+        {
+            continue;
+        }
+        IFstream is(C_.objectPath());
+        const dictionary fieldDict(is);
+        FatalIOErrorInFunction
+        (
+            fieldDict.subDict("boundaryField").subDict(pp.name())
+        )   << "Patch " << pp.name() << ": type " << type
+            << " is not supported by the lattice advection-diffusion of "
+            << C_.name() << nl
+            << "    Allowed types: " << allowed
+            << " (and cyclic, empty)" << exit(FatalIOError);
+    }
+
+    DynamicList<label> node, dir, patch;
+    DynamicList<linkKind> kind;
+    DynamicList<scalar> value, velocity;
+    DynamicList<bool> nodeVelocity;
+
+    const labelList& cellNode = lattice_.cellNode();
+    const List<unsigned char>& nodeKind = lattice_.kind();
+    const List<FixedList<label, 6>>& faces = lattice_.cellBoundaryFace();
+
+    forAll(cellNode, celli)
+    {
+        const label n = cellNode[celli];
+        for (label q = 1; q < Q_; ++q)
+        {
+            if (nodeKind[n + offset_[q]] != latticeMesh::WALL)
+            {
+                continue;
+            }
+            const label a = axisOf(q);
+            const label facei = faces[celli][2*a + (signOf(q) > 0 ? 1 : 0)];
+            const label patchi =
+                facei >= 0 ? patches.whichPatch(facei) : -1;
+
+            linkKind k = CLOSED;
+            scalar Cw = 0;
+            scalar cu = 0;
+            bool useNode = false;
+            if (patchi >= 0)
+            {
+                const label i = facei - patches[patchi].start();
+                const fvPatchScalarField& Cp = C_.boundaryField()[patchi];
+                const word type = Cp.type();
+                if (type == "fixedValue")
+                {
+                    k = FIXED;
+                    Cw = Cp[i];
+                }
+                else if (type == "zeroGradient")
+                {
+                    k = ADVECTIVE;
+                }
+                else if (type == "inletOutlet")
+                {
+                    k = INLETOUTLET;
+                    Cw = refCast<const inletOutletFvPatchScalarField>(Cp)
+                        .refValue()[i];
+                }
+
+                switch (water.patchKinds()[patchi])
+                {
+                    case lbmBoundaries::PRESSURE:
+                        useNode = true;
+                        break;
+                    case lbmBoundaries::MOVINGWALL:
+                        cu = signOf(q)
+                           *units_.toLattice(U.boundaryField()[patchi][i])[a];
+                        break;
+                    default:
+                        break;
+                }
+            }
+
+            node.append(n);
+            dir.append(q);
+            patch.append(patchi);
+            kind.append(k);
+            value.append(Cw);
+            velocity.append(cu);
+            nodeVelocity.append(useNode);
+        }
+    }
+
+    linkNode_.transfer(node);
+    linkDir_.transfer(dir);
+    linkPatch_.transfer(patch);
+    linkKind_.transfer(kind);
+    linkValue_.transfer(value);
+    linkVelocity_.transfer(velocity);
+    linkNodeVelocity_.transfer(nodeVelocity);
+}
+
+
+void Foam::latticeAdvectionDiffusion::initialise
+(
+    const UList<vector>& u,
+    const scalarList* porosity
+)
+{
+    const label nBox = lattice_.nBox();
+    gA_.setSize(Q_*nBox, 0.0);
+    gB_.setSize(Q_*nBox, 0.0);
+    AisCurrent_ = true;
+    scalarList& g = current();
+
+    const word prefix(C_.name() + "G");
+    if (foundNodeField(lattice_, prefix + "0"))
+    {
+        if
+        (
+            !foundNodeField(lattice_, prefix + Foam::name(Q_ - 1))
+         || foundNodeField(lattice_, prefix + Foam::name(Q_))
+        )
+        {
+            FatalErrorInFunction
+                << "The populations of " << C_.name() << " in "
+                << lattice_.mesh().time().timePath() << " were not written"
+                << " for a " << lattice_.nDim() << "D lattice (" << Q_
+                << " files " << prefix << "0.." << prefix << Q_ - 1
+                << " expected)." << nl
+                << "    Remove the " << prefix << "* files to start from "
+                << C_.name() << " at equilibrium." << exit(FatalError);
+        }
+        Info<< "Reading populations " << prefix << "0.." << prefix << Q_ - 1
+            << " from time " << lattice_.mesh().time().timeName() << endl;
+        for (label q = 0; q < Q_; ++q)
+        {
+            readNodeField(lattice_, prefix + Foam::name(q), g.data() + q*nBox);
+        }
+    }
+    else
+    {
+        const labelList& cellNode = lattice_.cellNode();
+        forAll(cellNode, celli)
+        {
+            const label n = cellNode[celli];
+            const scalar eps = porosity ? (*porosity)[n] : 1;
+            const scalar Phi = eps*C_[celli];
+            const vector v = u[n]/eps;
+            g[n] = Phi*(w0_ - magSqr(v));
+            for (label q = 1; q < Q_; ++q)
+            {
+                const scalar va = v[axisOf(q)];
+                g[q*nBox + n] = 0.5*Phi*(cs2_ + va*va + signOf(q)*va);
+            }
+        }
+    }
+
+    initialised_ = true;
+    content0_ = content();
+}
+
+
+void Foam::latticeAdvectionDiffusion::fillBoundaries
+(
+    scalar* g,
+    const UList<vector>& u,
+    const scalarList* porosity
+)
+{
+    const label nBox = lattice_.nBox();
+    const scalar Vcell = lattice_.cellVolume();
+    forAll(linkNode_, l)
+    {
+        const label x = linkNode_[l];
+        const label i = linkDir_[l];
+        const label slot = oppositeOf(i)*nBox + x + offset_[i];
+        const scalar gi = g[i*nBox + x];
+        const scalar eps = porosity ? (*porosity)[x] : 1;
+
+        linkKind k = linkKind_[l];
+        scalar cv = 0;
+        if (k == ADVECTIVE || k == INLETOUTLET)
+        {
+            cv =
+                (
+                    linkNodeVelocity_[l]
+                  ? signOf(i)*u[x][axisOf(i)]
+                  : linkVelocity_[l]
+                )/eps;
+            if (k == INLETOUTLET)
+            {
+                k = cv > 0 ? ADVECTIVE : FIXED;
+            }
+        }
+
+        scalar value = gi;
+        if (k == FIXED)
+        {
+            value = -gi + cs2_*eps*linkValue_[l];
+        }
+        else if (k == ADVECTIVE)
+        {
+            scalar Phi = 0;
+            for (label q = 0; q < Q_; ++q)
+            {
+                Phi += g[q*nBox + x];
+            }
+            value = gi - Phi*cv;
+        }
+        g[slot] = value;
+
+        if (linkPatch_[l] >= 0)
+        {
+            patchOutflow_[linkPatch_[l]] += (gi - value)*Vcell;
+        }
+    }
+}
+
+
+void Foam::latticeAdvectionDiffusion::instability
+(
+    const UList<vector>& u,
+    const scalarList* porosity
+) const
+{
+    const scalarList& g = current();
+    const label nBox = lattice_.nBox();
+    for (const label n : lattice_.cellNode())
+    {
+        scalar Phi = 0;
+        for (label q = 0; q < Q_; ++q)
+        {
+            Phi += g[q*nBox + n];
+        }
+        const scalar eps = porosity ? (*porosity)[n] : 1;
+        const scalar v2 = magSqr(u[n]/eps);
+        if (!std::isfinite(Phi) || v2 > w0_)
+        {
+            FatalErrorInFunction
+                << "The advection-diffusion of " << C_.name()
+                << " left its stable range at time "
+                << lattice_.mesh().time().timeName() << ", cell "
+                << lattice_.nodeCell()[n] << " at "
+                << lattice_.position(n) << ": " << C_.name() << " "
+                << Phi/eps << ", pore speed "
+                << std::sqrt(v2)*units_.velocityScale() << " m/s (lattice "
+                << std::sqrt(v2) << ", limit sqrt(w0) = "
+                << std::sqrt(w0_) << ")." << nl
+                << "    A smaller deltaT lowers the lattice speed; the"
+                << " water's own Mach limit (machLimit) is the other"
+                << " bound." << exit(FatalError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
+(
+    const latticeMesh& lattice,
+    const lbmUnits& units,
+    const word& fieldName,
+    const dictionary& dict,
+    const lbmBoundaries& water,
+    const volVectorField& U
+)
+:
+    lattice_(lattice),
+    units_(units),
+    C_
+    (
+        IOobject
+        (
+            fieldName,
+            lattice.mesh().time().timeName(),
+            lattice.mesh(),
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        lattice.mesh()
+    ),
+    D_(0),
+    d_(lattice.nDim()),
+    Q_(2*d_ + 1),
+    cs2_(d_ == 2 ? 1.0/3.0 : 0.25),
+    w0_(1 - d_*cs2_),
+    tau_(1),
+    offset_(Q_, 0),
+    AisCurrent_(true),
+    patchOutflow_(lattice.mesh().boundaryMesh().size(), Zero),
+    sourced_(0),
+    content0_(0),
+    limited_(0),
+    v2Max_(0),
+    PhiMin_(0),
+    nSteps_(0),
+    initialised_(false)
+{
+    setRelaxation(dict);
+
+    for (label q = 1; q < Q_; ++q)
+    {
+        labelVector c(Zero);
+        c[axisOf(q)] = label(signOf(q));
+        offset_[q] = lattice_.offset(c.x(), c.y(), c.z());
+    }
+
+    forAll(C_, celli)
+    {
+        if (!std::isfinite(C_[celli]) || C_[celli] < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << C_.objectPath() << ": " << C_.name() << " " << C_[celli]
+                << " in cell " << celli << "; the transported scalar must"
+                << " be finite and non-negative" << exit(FatalIOError);
+        }
+    }
+
+    buildLinks(water, U);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::latticeAdvectionDiffusion::step
+(
+    const UList<vector>& u,
+    const scalarList* porosity,
+    const scalarList* source
+)
+{
+    if (!initialised_)
+    {
+        initialise(u, porosity);
+    }
+
+    const label nBox = lattice_.nBox();
+    scalarList& g = current();
+    lattice_.halo().exchange(g.data(), Q_, nBox);
+    fillBoundaries(g.data(), u, porosity);
+
+    transportStats st;
+    const scalar* eps = porosity ? porosity->cdata() : nullptr;
+    const scalar* S = source ? source->cdata() : nullptr;
+    if (d_ == 2)
+    {
+        streamCollide<2>
+        (
+            g.cdata(), next().data(), nBox, offset_.cdata(),
+            lattice_.runs(), u.cdata(), eps, S,
+            1/tau_, cs2_, st
+        );
+    }
+    else
+    {
+        streamCollide<3>
+        (
+            g.cdata(), next().data(), nBox, offset_.cdata(),
+            lattice_.runs(), u.cdata(), eps, S,
+            1/tau_, cs2_, st
+        );
+    }
+
+    sourced_ += st.sourced*lattice_.cellVolume();
+    limited_ = st.limited;
+    v2Max_ = st.v2Max;
+    PhiMin_ = st.PhiMin;
+    ++nSteps_;
+    AisCurrent_ = !AisCurrent_;
+
+    if (!std::isfinite(st.sum) || !(st.v2Max <= w0_))
+    {
+        instability(u, porosity);
+    }
+}
+
+
+Foam::scalar Foam::latticeAdvectionDiffusion::Phi(const label n) const
+{
+    const scalarList& g = current();
+    const label nBox = lattice_.nBox();
+    scalar sum = 0;
+    for (label q = 0; q < Q_; ++q)
+    {
+        sum += g[q*nBox + n];
+    }
+    return sum;
+}
+
+
+Foam::scalar Foam::latticeAdvectionDiffusion::content() const
+{
+    scalar sum = 0;
+    if (initialised_)
+    {
+        for (const label n : lattice_.cellNode())
+        {
+            sum += Phi(n);
+        }
+    }
+    return returnReduce(sum*lattice_.cellVolume(), sumOp<scalar>());
+}
+
+
+Foam::scalar Foam::latticeAdvectionDiffusion::sourced() const
+{
+    return returnReduce(sourced_, sumOp<scalar>());
+}
+
+
+Foam::scalarList Foam::latticeAdvectionDiffusion::patchOutflow() const
+{
+    scalarList out(patchOutflow_);
+    Pstream::listCombineGather(out, plusEqOp<scalar>());
+    Pstream::listCombineScatter(out);
+    return out;
+}
+
+
+Foam::scalar Foam::latticeAdvectionDiffusion::balanceDefect() const
+{
+    const scalar now = content();
+    const scalar added = sourced();
+    const scalar out = sum(patchOutflow());
+    const scalar scale =
+        max(max(mag(now), mag(content0_)), max(mag(added), mag(out)));
+    return scale > 0 ? (now - (content0_ + added - out))/scale : 0;
+}
+
+
+Foam::scalar Foam::latticeAdvectionDiffusion::minPhi() const
+{
+    return returnReduce(PhiMin_, minOp<scalar>());
+}
+
+
+Foam::label Foam::latticeAdvectionDiffusion::limitedNodes() const
+{
+    return returnReduce(limited_, sumOp<label>());
+}
+
+
+void Foam::latticeAdvectionDiffusion::updateField(const scalarList* porosity)
+{
+    if (!initialised_)
+    {
+        return;
+    }
+    const labelList& cellNode = lattice_.cellNode();
+    scalarField& C = C_.primitiveFieldRef();
+    forAll(cellNode, celli)
+    {
+        const label n = cellNode[celli];
+        C[celli] = Phi(n)/(porosity ? (*porosity)[n] : 1);
+    }
+    // (the patch values stay as read: the lattice imposes the patches at
+    // the half-way links, and inletOutlet would need a face flux phi)
+}
+
+
+void Foam::latticeAdvectionDiffusion::writePopulations() const
+{
+    if (!initialised_)
+    {
+        return;
+    }
+    const label nBox = lattice_.nBox();
+    const scalarList& g = current();
+    for (label q = 0; q < Q_; ++q)
+    {
+        writeNodeField
+        (
+            lattice_, C_.name() + "G" + Foam::name(q), g.cdata() + q*nBox
+        );
+    }
+}
+
+
+Foam::scalar Foam::latticeAdvectionDiffusion::memoryBytes() const
+{
+    return returnReduce
+    (
+        scalar(sizeof(scalar))*(gA_.size() + gB_.size()),
+        sumOp<scalar>()
+    );
+}
+
+
+void Foam::latticeAdvectionDiffusion::report(Ostream& os) const
+{
+    label nKind[4] = {0, 0, 0, 0};
+    for (const linkKind k : linkKind_)
+    {
+        ++nKind[k];
+    }
+    for (label& nk : nKind)
+    {
+        reduce(nk, sumOp<label>());
+    }
+    os  << "Advection-diffusion of " << C_.name() << ": D" << d_ << "Q" << Q_
+        << ", D " << D_ << " m2/s, tau " << tau_
+        << (tau_ < 1 ? " (over-relaxed: nodes that would turn negative"
+            " relax fully)" : "") << nl
+        << "    boundary links: " << nKind[CLOSED] << " closed, "
+        << nKind[FIXED] << " fixedValue, " << nKind[ADVECTIVE]
+        << " zeroGradient, " << nKind[INLETOUTLET] << " inletOutlet" << nl;
+}
+
+
+// ************************************************************************* //

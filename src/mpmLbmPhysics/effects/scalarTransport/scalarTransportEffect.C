@@ -1,0 +1,199 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "scalarTransportEffect.H"
+#include "physicsScene.H"
+#include "fluidEffect.H"
+#include "addToRunTimeSelectionTable.H"
+#include "addToMemberFunctionSelectionTable.H"
+
+namespace Foam
+{
+namespace physicsEffects
+{
+    defineTypeNameAndDebug(scalarTransport, 0);
+    addToRunTimeSelectionTable(physicsEffect, scalarTransport, scene);
+    addToMemberFunctionSelectionTable
+    (
+        physicsEffect,
+        scalarTransport,
+        haloWidth,
+        mesh
+    );
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
+:
+    physicsEffect(scene),
+    dict_
+    (
+        IOobject
+        (
+            "scalarTransportProperties",
+            scene.mesh().time().constant(),
+            scene.mesh(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
+    transport_
+    (
+        fluid_.lattice(),
+        fluid_.units(),
+        dict_.getOrDefault<word>("field", "C"),
+        dict_,
+        fluid_.boundaries(),
+        fluid_.U()
+    ),
+    u_(fluid_.lattice().nBox(), Zero)
+{
+    if (dict_.getOrDefault<bool>("writeBalance", false))
+    {
+        dictionary fileDict;
+        fileDict.add("writePrecision", 17);
+        balanceFile_.reset
+        (
+            new functionObjects::writeFile
+            (
+                scene.mesh(), "scalarTransport", "balance", fileDict
+            )
+        );
+        OFstream& os = balanceFile_->file();
+        balanceFile_->writeHeader
+        (
+            os,
+            "Balance of " + transport_.field().name()
+          + " [its units x m3]: content, added by sources, out through"
+            " each patch (negative: in), relative defect"
+        );
+        balanceFile_->writeCommented(os, "Time");
+        balanceFile_->writeTabbed(os, "content");
+        balanceFile_->writeTabbed(os, "sourced");
+        for (const polyPatch& pp : scene.mesh().boundaryMesh())
+        {
+            balanceFile_->writeTabbed(os, "out_" + pp.name());
+        }
+        balanceFile_->writeTabbed(os, "defect");
+        os  << endl;
+    }
+
+    transport_.report(Info);
+    Info<< endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::sceneStageList Foam::physicsEffects::scalarTransport::stages() const
+{
+    sceneStageList joined({sceneStage::transport});
+    if (balanceFile_.valid())
+    {
+        joined.append(sceneStage::endStep);
+    }
+    return joined;
+}
+
+
+void Foam::physicsEffects::scalarTransport::evolve(const sceneStage stage)
+{
+    if (stage == sceneStage::transport)
+    {
+        // The water's velocity after its step (the macroscopic, Guo
+        // velocity), superficial, in lattice units
+        fluid_.nodalVelocity(u_);
+        const lbmUnits& units = fluid_.units();
+        for (vector& v : u_)
+        {
+            v = units.toLattice(v);
+        }
+        transport_.step(u_, porosity());
+    }
+    else if (stage == sceneStage::endStep)
+    {
+        writeBalance();
+    }
+}
+
+
+void Foam::physicsEffects::scalarTransport::writeBalance()
+{
+    const scalar content = transport_.content();
+    const scalar sourced = transport_.sourced();
+    const scalarList out = transport_.patchOutflow();
+    const scalar defect = transport_.balanceDefect();
+    if (balanceFile_->writeToFile())
+    {
+        OFstream& os = balanceFile_->file();
+        balanceFile_->writeCurrentTime(os);
+        os  << tab << content << tab << sourced;
+        for (const scalar o : out)
+        {
+            os  << tab << o;
+        }
+        os  << tab << defect << endl;
+    }
+}
+
+
+Foam::string Foam::physicsEffects::scalarTransport::plan() const
+{
+    return
+        "one lattice step per step (D" + Foam::name(fluid_.lattice().nDim())
+      + "Q" + Foam::name(transport_.Q()) + ", tau "
+      + Foam::name(transport_.tau()) + ")";
+}
+
+
+void Foam::physicsEffects::scalarTransport::write()
+{
+    transport_.updateField(porosity());
+    transport_.writePopulations();
+}
+
+
+Foam::scalar Foam::physicsEffects::scalarTransport::updatesPerStep() const
+{
+    return fluid_.nNodes();
+}
+
+
+Foam::scalar Foam::physicsEffects::scalarTransport::updatesDone() const
+{
+    return scalar(fluid_.nNodes())*transport_.nSteps();
+}
+
+
+Foam::scalar Foam::physicsEffects::scalarTransport::memoryBytes() const
+{
+    return
+        transport_.memoryBytes()
+      + returnReduce(scalar(u_.byteSize()), sumOp<scalar>());
+}
+
+
+Foam::string Foam::physicsEffects::scalarTransport::progress() const
+{
+    return
+        transport_.field().name() + " balance defect "
+      + Foam::name(transport_.balanceDefect())
+      + ", min " + Foam::name(transport_.minPhi());
+}
+
+
+// ************************************************************************* //
