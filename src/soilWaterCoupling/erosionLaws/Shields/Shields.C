@@ -1,0 +1,87 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "Shields.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace erosionLaws
+{
+    defineTypeNameAndDebug(Shields, 0);
+    addToRunTimeSelectionTable(erosionLaw, Shields, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::scalar Foam::erosionLaws::Shields::Dstar
+(
+    const scalar d,
+    const scalar s,
+    const scalar nu,
+    const scalar g
+)
+{
+    return d*std::cbrt(g*(s - 1)/(nu*nu));
+}
+
+
+Foam::scalar Foam::erosionLaws::Shields::criticalShieldsNumber
+(
+    const scalar Dstar
+)
+{
+    // Soulsby & Whitehouse (1997) (Soulsby 1997, eq. 77): the minus sign
+    // in the exponent makes the curve rise to 0.055 for coarse grains
+    return 0.30/(1 + 1.2*Dstar) + 0.055*(1 - std::exp(-0.020*Dstar));
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::erosionLaws::Shields::Shields(const dictionary& dict)
+:
+    excessShearStress(typeName, dict, false),
+    d_(readCoeff("d", true, "[m] (the grain diameter)")),
+    thetaC_(0),
+    given_(coeffs_.found("thetaC"))
+{
+    const scalar s = rhoSolid_/rhoFluid_;
+    thetaC_ =
+        given_
+      ? readCoeff("thetaC", true, "(the critical Shields number)")
+      : criticalShieldsNumber(Dstar(d_, s, nuFluid_, g_));
+    tauC_ = thetaC_*(rhoSolid_ - rhoFluid_)*g_*d_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::erosionLaws::Shields::report(Ostream& os) const
+{
+    os  << "Erosion law Shields: m_dot = kEr (tau - tauC), kEr " << kEr_
+        << " s/m, d " << d_ << " m, critical Shields number " << thetaC_
+        << (given_ ? " (given)" : " (Soulsby & Whitehouse 1997, D* ")
+        << (given_ ? "" : Foam::name
+            (
+                Dstar(d_, rhoSolid_/rhoFluid_, nuFluid_, g_)
+            ) + ")")
+        << ": tauC = thetaC (rho_s - rho_w) g d = " << tauC_ << " Pa" << nl;
+}
+
+
+// ************************************************************************* //
