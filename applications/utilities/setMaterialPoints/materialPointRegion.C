@@ -95,6 +95,7 @@ Foam::materialPointRegion::materialPointRegion
     rho_(0),
     velocity_(Zero),
     porosity_(0),
+    finesContent_(0),
     stress_(stressType::none),
     surfaceHeight_(0),
     K0_(1),
@@ -129,6 +130,14 @@ Foam::materialPointRegion::materialPointRegion
             << "Region " << name_ << ": porosity " << porosity_
             << " is not allowed: the void fraction must lie in [0, 1)"
             << exit(FatalIOError);
+    }
+    finesContent_ = dict_.getOrDefault<scalar>("finesContent", 0);
+    if (!(finesContent_ >= 0 && finesContent_ < 1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Region " << name_ << ": finesContent " << finesContent_
+            << " is not allowed: the erodible fines' mass fraction of the"
+            << " solid must lie in [0, 1)" << exit(FatalIOError);
     }
     stress_ = stressTypeNames.getOrDefault("stress", dict_, stressType::none);
     if (stress_ == stressType::geostatic)

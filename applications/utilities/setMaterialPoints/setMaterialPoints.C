@@ -238,6 +238,13 @@ static void fillPoints
         if (region[i] >= 0) ++nPoints;
     }
     points.setSize(nPoints);
+    for (const materialPointRegion& reg : regions)
+    {
+        if (reg.finesContent() > 0)
+        {
+            points.enableFines();
+        }
+    }
     const scalar Vp = lattice.cellVolume()/perCell;
     const vector halfSize(0.5/n, 0.5/n, nDim == 2 ? 0.5 : 0.5/n);
     const vector up = mag(gravity) > SMALL ? -gravity/mag(gravity) : vector(0, 1, 0);
@@ -262,6 +269,10 @@ static void fillPoints
         points.material[k] = reg.material();
         points.halfLength[k] = halfSize;
         points.porosity[k] = reg.porosity();
+        if (points.carriesFines)
+        {
+            points.fines[k] = reg.finesContent();
+        }
         points.id[k] = candidateId[i];
         ++k;
     }

@@ -524,6 +524,14 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
     }
 
     buildLinks(water, U);
+
+    // Written populations are read now, at the start time (a start from
+    // the field waits for the water's velocity and porosity of the first
+    // step)
+    if (foundNodeField(lattice_, C_.name() + "G0"))
+    {
+        initialise(List<vector>(), nullptr);
+    }
 }
 
 
@@ -536,10 +544,7 @@ void Foam::latticeAdvectionDiffusion::step
     const scalarList* source
 )
 {
-    if (!initialised_)
-    {
-        initialise(u, porosity);
-    }
+    prepare(u, porosity);
 
     const label nBox = lattice_.nBox();
     scalarList& g = current();

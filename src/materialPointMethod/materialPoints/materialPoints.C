@@ -106,6 +106,20 @@ void Foam::materialPoints::setSize(const label n)
     halfLength.setSize(n);
     porosity.setSize(n);
     id.setSize(n);
+    if (carriesFines)
+    {
+        fines.setSize(n, Zero);
+    }
+}
+
+
+void Foam::materialPoints::enableFines()
+{
+    if (!carriesFines)
+    {
+        carriesFines = true;
+        fines.setSize(size(), Zero);
+    }
 }
 
 
@@ -186,6 +200,10 @@ void Foam::materialPoints::migrate
         put(x); put(v); put(m); put(V); put(V0); put(F); put(sigma);
         put(plasticStrain); put(C); put(material); put(halfLength);
         put(porosity); put(id);
+        if (carriesFines)
+        {
+            put(fines);
+        }
         if (extra)
         {
             put(*extra);
@@ -229,6 +247,10 @@ void Foam::materialPoints::migrate
         plasticStrain[k] = plasticStrain[p]; C[k] = C[p];
         material[k] = material[p]; halfLength[k] = halfLength[p];
         porosity[k] = porosity[p]; id[k] = id[p];
+        if (carriesFines)
+        {
+            fines[k] = fines[p];
+        }
         if (extra)
         {
             (*extra)[k] = (*extra)[p];
@@ -266,6 +288,10 @@ void Foam::materialPoints::migrate
         get(x); get(v); get(m); get(V); get(V0); get(F); get(sigma);
         get(plasticStrain); get(C); get(material); get(halfLength);
         get(porosity); get(id);
+        if (carriesFines)
+        {
+            get(fines);
+        }
         if (extra)
         {
             get(*extra);
@@ -306,6 +332,18 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
     {
         readFields(cloud, mesh.time().path()/timeName);
         haveIds = readField(cloud, "origId", id);
+    }
+    // Fines, where the points carry them (any processor's cloud)
+    fines.clear();
+    carriesFines = false;
+    const bool haveFines = n && readField(cloud, "fines", fines);
+    if (returnReduce(haveFines, orOp<bool>()))
+    {
+        carriesFines = true;
+        if (!haveFines)
+        {
+            fines.setSize(n, Zero);
+        }
     }
     if (!returnReduce(haveIds, andOp<bool>()))
     {
@@ -419,6 +457,10 @@ void Foam::materialPoints::write
     writeField(cloud, "porosity", porosity, true);
     writeField(cloud, "F", F, true);
     writeField(cloud, "C", C, true);
+    if (carriesFines)
+    {
+        writeField(cloud, "fines", fines, true);
+    }
     scalarList pressure(size());
     forAll(pressure, i)
     {

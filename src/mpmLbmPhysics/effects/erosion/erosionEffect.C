@@ -1,0 +1,407 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "erosionEffect.H"
+#include "physicsScene.H"
+#include "fluidEffect.H"
+#include "soilEffect.H"
+#include "dragEffect.H"
+#include "dragModel.H"
+#include "uniformDimensionedFields.H"
+#include "addToRunTimeSelectionTable.H"
+#include "addToMemberFunctionSelectionTable.H"
+
+namespace Foam
+{
+namespace physicsEffects
+{
+    defineTypeNameAndDebug(erosion, 0);
+    addToRunTimeSelectionTable(physicsEffect, erosion, scene);
+    addToMemberFunctionSelectionTable(physicsEffect, erosion, haloWidth, mesh);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+// The drag's law, after refusing a one-way drag (the soil would not feel
+// the water that erodes it)
+const dragModel& twoWayDrag(physicsScene& scene, const dictionary& dict)
+{
+    const physicsEffects::drag& d =
+        scene.effect<physicsEffects::drag>("drag");
+    if (!d.twoWay())
+    {
+        FatalIOErrorInFunction(d.dict())
+            << "erosion needs drag twoWay (constant/dragProperties has drag"
+            << " oneWay): the soil must feel the water that erodes it"
+            << exit(FatalIOError);
+    }
+    return d.model();
+}
+
+
+// |g| from constant/g (the hydraulic gradient and the Shields threshold
+// use it, whether or not the scene applies gravity)
+scalar gravityMagnitude(const fvMesh& mesh, const dictionary& dict)
+{
+    IOobject io
+    (
+        "g",
+        mesh.time().constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!io.typeHeaderOk<uniformDimensionedVectorField>(true))
+    {
+        FatalIOErrorInFunction(dict)
+            << "erosion needs constant/g: the hydraulic gradient"
+            << " i = q mu/(k rho_w |g|) and the Shields threshold use |g|"
+            << exit(FatalIOError);
+    }
+    const scalar g = mag(uniformDimensionedVectorField(io).value());
+    if (!(g > 0) || !std::isfinite(g))
+    {
+        FatalIOErrorInFunction(dict)
+            << "constant/g: |g| " << g << " is not allowed: erosion's"
+            << " hydraulic gradient and Shields threshold need a gravity"
+            << " (it acts on the phases only with the gravity effect)"
+            << exit(FatalIOError);
+    }
+    return g;
+}
+
+
+// The erosion dictionary with what the law takes from the scene
+dictionary lawDict
+(
+    const dictionary& dict,
+    const latticeBoltzmannFluid& fluid,
+    const dragModel& drag,
+    const scalar g
+)
+{
+    dictionary d(dict);
+    d.set("rhoFluid", fluid.units().rho0());
+    d.set("nuFluid", drag.muFluid()/drag.rhoFluid());
+    d.set("g", g);
+    return d;
+}
+
+
+// finesLimit of every material of constant/soilProperties, in the soil's
+// order
+scalarList finesLimits(const fvMesh& mesh, const materialPointSoil& soil)
+{
+    const IOdictionary soilDict
+    (
+        IOobject
+        (
+            "soilProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    const dictionary& materials = soilDict.subDict("materials");
+    scalarList limits(soil.materials().size(), Zero);
+    forAll(limits, mati)
+    {
+        const dictionary& matDict =
+            materials.subDict(soil.materials()[mati].name());
+        limits[mati] = matDict.getOrDefault<scalar>("finesLimit", 0);
+        if (!(limits[mati] >= 0 && limits[mati] < 1))
+        {
+            FatalIOErrorInFunction(matDict)
+                << "finesLimit " << limits[mati] << " is not allowed: the"
+                << " fines content erosion stops at, a mass fraction of the"
+                << " solid in [0, 1)" << exit(FatalIOError);
+        }
+    }
+    return limits;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::physicsEffects::erosion::erosion(physicsScene& scene)
+:
+    physicsEffect(scene),
+    dict_
+    (
+        IOobject
+        (
+            "erosionProperties",
+            scene.mesh().time().constant(),
+            scene.mesh(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
+    soil_(scene.effect<physicsEffects::soil>("soil")),
+    drag_(twoWayDrag(scene, dict_)),
+    g_(gravityMagnitude(scene.mesh(), dict_)),
+    law_(erosionLaw::New(lawDict(dict_, fluid_, drag_, g_))),
+    finesLimit_(finesLimits(scene.mesh(), soil_.mpm())),
+    suspension_
+    (
+        fluid_.lattice(),
+        fluid_.units(),
+        dict_.getOrDefault<word>("field", "fines"),
+        dict_,
+        fluid_.boundaries(),
+        fluid_.U()
+    ),
+    uPhysical_(fluid_.lattice().nBox(), Zero),
+    u_(fluid_.lattice().nBox(), Zero),
+    source_(fluid_.lattice().nBox(), Zero),
+    eroded_(0)
+{
+    if (law_->surface())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "erosionLaw " << law_->type() << " erodes the soil's surface,"
+            << " which the erosion effect does not do yet (the wall shear"
+            << " stress at the soil's surface); the law it applies now:"
+            << " suffusion" << exit(FatalIOError);
+    }
+    if (suspension_.field().dimensions() != dimDensity)
+    {
+        FatalIOErrorInFunction(dict_)
+            << suspension_.field().objectPath() << ": the suspended fines"
+            << " are a mass per volume of water " << dimDensity << ", not "
+            << suspension_.field().dimensions() << exit(FatalIOError);
+    }
+    if (!soil_.mpm().points().carriesFines)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The material points carry no fines: give a region of"
+            << " system/setMaterialPointsDict a finesContent and run"
+            << " setMaterialPoints" << exit(FatalIOError);
+    }
+
+    if (dict_.getOrDefault<bool>("writeBalance", true))
+    {
+        dictionary fileDict;
+        fileDict.add("writePrecision", 17);
+        balanceFile_.reset
+        (
+            new functionObjects::writeFile
+            (
+                scene.mesh(), "erosion", "erosion", fileDict
+            )
+        );
+        OFstream& os = balanceFile_->file();
+        balanceFile_->writeHeader
+        (
+            os,
+            "Eroded fines [kg]: eroded from the points since the start,"
+            " suspended in the water, out through the patches since the"
+            " start, and the balance's defect over the eroded mass"
+        );
+        balanceFile_->writeCommented(os, "Time");
+        for (const char* col : {"eroded", "suspended", "out", "defect"})
+        {
+            balanceFile_->writeTabbed(os, col);
+        }
+        os  << endl;
+    }
+
+    Info<< "Erosion of the soil's fines" << nl;
+    law_->report(Info);
+    forAll(finesLimit_, mati)
+    {
+        Info<< "    " << soil_.mpm().materials()[mati].name()
+            << ": finesLimit " << finesLimit_[mati] << nl;
+    }
+    suspension_.report(Info);
+    Info<< endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::sceneStageList Foam::physicsEffects::erosion::stages() const
+{
+    sceneStageList joined({sceneStage::transport});
+    if (balanceFile_.valid())
+    {
+        joined.append(sceneStage::endStep);
+    }
+    return joined;
+}
+
+
+void Foam::physicsEffects::erosion::erodePoints()
+{
+    const latticeMesh& lattice = fluid_.lattice();
+    const scalarList& phi = soil_.solidFraction();
+    const List<vector>& soilVelocity = soil_.nodeVelocity();
+    materialPoints& pts = soil_.mpm().points();
+
+    const scalar dt = scene_.mesh().time().deltaTValue();
+    const scalar Vcell = lattice.cellVolume();
+    const scalar rhoS = law_->rhoSolid();
+    const scalar dx = lattice.dx();
+    const vector& origin = lattice.origin();
+    const labelVector& bs = lattice.boxStart();
+
+    source_ = 0;
+    bool changed = false;
+    forAll(pts.x, p)
+    {
+        const scalar fLim = finesLimit_[pts.material[p]];
+        const scalar f = pts.fines[p];
+        if (!(f > fLim))
+        {
+            continue;
+        }
+
+        // The node of the point's cell
+        labelVector b;
+        for (direction d = 0; d < 3; ++d)
+        {
+            b[d] = (d == 2 && lattice.twoD())
+                 ? 0
+                 : label(std::floor((pts.x[p][d] - origin[d])/dx)) - bs[d];
+        }
+        const label n = lattice.node(b.x(), b.y(), b.z());
+
+        const scalar nNode = max(1 - phi[n], 0.01);
+        const scalar q = mag(uPhysical_[n] - nNode*soilVelocity[n]);
+        const scalar K = drag_.hydraulicConductivity(phi[n], g_);
+        const scalar i = K < VGREAT ? q/K : 0;
+        const scalar c = suspension_.Phi(n)/nNode/rhoS;
+
+        const scalar m = pts.m[p];
+        const scalar rate =
+            law_->internalRate(pts.porosity[p], f - fLim, c, q, i);
+        const scalar dm = min(rate*pts.V[p]*dt, m*(f - fLim)/(1 - fLim));
+        if (!(dm > 0))
+        {
+            continue;
+        }
+
+        // The point keeps its volume and loses the grains' volume dm/rhoS
+        // (the eroded mass is what the point lost, exactly: m - m' is
+        // exact in floating point for m' in [m/2, m])
+        const scalar mNew = m - dm;
+        const scalar lost = m - mNew;
+        pts.fines[p] = (f*m - lost)/mNew;
+        pts.porosity[p] = min(pts.porosity[p] + lost/(rhoS*pts.V[p]), 1.0);
+        pts.m[p] = mNew;
+        source_[n] += lost/Vcell;
+        eroded_ += lost;
+        changed = true;
+    }
+    if (returnReduce(changed, orOp<bool>()))
+    {
+        soil_.pointsChanged();
+    }
+}
+
+
+void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
+{
+    if (stage == sceneStage::transport)
+    {
+        fluid_.nodalVelocity(uPhysical_);
+        const lbmUnits& units = fluid_.units();
+        forAll(u_, n)
+        {
+            u_[n] = units.toLattice(uPhysical_[n]);
+        }
+        suspension_.prepare(u_, porosity());
+        erodePoints();
+        suspension_.step(u_, porosity(), &source_);
+    }
+    else if (stage == sceneStage::endStep)
+    {
+        writeBalance();
+    }
+}
+
+
+Foam::scalar Foam::physicsEffects::erosion::eroded() const
+{
+    return returnReduce(eroded_, sumOp<scalar>());
+}
+
+
+void Foam::physicsEffects::erosion::writeBalance()
+{
+    const scalar e = eroded();
+    const scalar suspended = suspension_.content();
+    const scalar out = sum(suspension_.patchOutflow());
+    const scalar defect =
+        e > 0 ? (suspended + out - suspension_.content0() - e)/e : 0;
+    if (balanceFile_->writeToFile())
+    {
+        OFstream& os = balanceFile_->file();
+        balanceFile_->writeCurrentTime(os);
+        os  << tab << e << tab << suspended << tab << out << tab << defect
+            << endl;
+    }
+}
+
+
+Foam::string Foam::physicsEffects::erosion::plan() const
+{
+    return
+        "points eroded each step, the suspension on a D"
+      + Foam::name(fluid_.lattice().nDim()) + "Q"
+      + Foam::name(suspension_.Q()) + " lattice (tau "
+      + Foam::name(suspension_.tau()) + ")";
+}
+
+
+void Foam::physicsEffects::erosion::write()
+{
+    suspension_.updateField(porosity());
+    suspension_.writePopulations();
+}
+
+
+Foam::scalar Foam::physicsEffects::erosion::memoryBytes() const
+{
+    return
+        suspension_.memoryBytes()
+      + returnReduce
+        (
+            scalar(uPhysical_.byteSize() + u_.byteSize() + source_.byteSize()),
+            sumOp<scalar>()
+        );
+}
+
+
+Foam::string Foam::physicsEffects::erosion::progress() const
+{
+    return
+        "eroded " + Foam::name(eroded()) + " kg, suspended "
+      + Foam::name(suspension_.content()) + " kg";
+}
+
+
+// ************************************************************************* //
