@@ -271,6 +271,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     bodyAcceleration_(Zero),
     machLimit_(dict_.getOrDefault<scalar>("machLimit", 0.5)),
     smagorinsky_(dict_.getOrDefault<scalar>("smagorinskyConstant", 0)),
+    writeStress_(dict_.getOrDefault<bool>("writeViscousStress", false)),
     U_
     (
         IOobject
@@ -818,6 +819,85 @@ void Foam::latticeBoltzmannFluid::streamedScalar
         }
     }
     streamScratch(G);
+}
+
+
+void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& w = velocitySet_->w();
+
+    // The populations the next step collides: the current ones pulled,
+    // with the halo and the boundaries' wall slots
+    scratch_ = current();
+    halo_.exchangeSelected(scratch_.data(), nBox);
+    boundaries_->fill
+    (
+        scratch_.data(),
+        porosity_.size() ? porosity_.cdata() : nullptr
+    );
+
+    const scalar factor = 1 - 0.5/units_.tau();
+    const scalar toPa = units_.rho0()*sqr(units_.velocityScale());
+    scalarList f(Q);
+    sigma.setSize(nBox);
+    sigma = Zero;
+    for (const label n : lattice_.cellNode())
+    {
+        scalar rho = 0;
+        vector j(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            f[q] = scratch_[q*nBox + n - offset_[q]];
+            rho += f[q];
+            j += f[q]*vector(c[q]);
+        }
+        const vector F = nodeForce(n, rho);
+        const vector u = (j + 0.5*F)/rho;
+        const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
+        const scalar u2 = magSqr(u)/eps;
+
+        symmTensor Pi(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            const vector cq(c[q]);
+            const scalar cu = cq & u;
+            const scalar feq =
+                w[q]*rho*(1 + 3*cu + 4.5*cu*cu/eps - 1.5*u2);
+            Pi += (f[q] - feq)*sqr(cq);
+        }
+        sigma[n] = -factor*toPa*(Pi + symm(F*u));
+    }
+}
+
+
+void Foam::latticeBoltzmannFluid::writeViscousStress()
+{
+    List<symmTensor> sigma;
+    viscousStress(sigma);
+    volSymmTensorField fld
+    (
+        IOobject
+        (
+            "viscousStress",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimensionedSymmTensor(dimPressure, Zero)
+    );
+    const labelList& cellNode = lattice_.cellNode();
+    symmTensorField& values = fld.primitiveFieldRef();
+    forAll(cellNode, celli)
+    {
+        values[celli] = sigma[cellNode[celli]];
+    }
+    fld.write();
 }
 
 

@@ -13,6 +13,7 @@ License
 
 #include "physicsEffect.H"
 #include "fvMesh.H"
+#include "OFstream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -21,6 +22,36 @@ namespace Foam
     defineTypeNameAndDebug(physicsEffect, 0);
     defineRunTimeSelectionTable(physicsEffect, scene);
     defineMemberFunctionSelectionTable(physicsEffect, haloWidth, mesh);
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::functionObjects::writeFile>
+Foam::physicsEffect::newStepFile
+(
+    const fvMesh& mesh,
+    const word& dir,
+    const word& name,
+    const string& header,
+    const wordList& columns
+)
+{
+    dictionary fileDict;
+    fileDict.add("writePrecision", 17);
+    autoPtr<functionObjects::writeFile> file
+    (
+        new functionObjects::writeFile(mesh, dir, name, fileDict)
+    );
+    OFstream& os = file->file();
+    file->writeHeader(os, header);
+    file->writeCommented(os, "Time");
+    for (const word& col : columns)
+    {
+        file->writeTabbed(os, col);
+    }
+    os  << endl;
+    return file;
 }
 
 

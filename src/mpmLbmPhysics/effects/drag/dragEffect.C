@@ -108,29 +108,19 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
         nodeForce_.setSize(fluid_.lattice().nBox(), Zero);
         if (dict_.getOrDefault<bool>("writeMomentum", false))
         {
-            dictionary fileDict;
-            fileDict.add("writePrecision", 17);
-            momentumFile_.reset
-            (
-                new functionObjects::writeFile
-                (
-                    scene.mesh(), "momentumBalance", "momentum", fileDict
-                )
-            );
-            OFstream& os = momentumFile_->file();
-            momentumFile_->writeHeader
-            (
-                os, "Momentum of the water, the soil and both [kg m/s]"
-            );
-            momentumFile_->writeCommented(os, "Time");
+            wordList columns;
             for (const char* phase : {"water", "soil", "total"})
             {
                 for (const char* xyz : {"X", "Y", "Z"})
                 {
-                    momentumFile_->writeTabbed(os, word(phase) + xyz);
+                    columns.append(word(phase) + xyz);
                 }
             }
-            os  << endl;
+            momentumFile_ = newStepFile
+            (
+                scene.mesh(), "momentumBalance", "momentum",
+                "Momentum of the water, the soil and both [kg m/s]", columns
+            );
             writeMomentum();
         }
     }

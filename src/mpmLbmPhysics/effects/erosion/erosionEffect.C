@@ -204,29 +204,14 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
 
     if (dict_.getOrDefault<bool>("writeBalance", true))
     {
-        dictionary fileDict;
-        fileDict.add("writePrecision", 17);
-        balanceFile_.reset
+        balanceFile_ = newStepFile
         (
-            new functionObjects::writeFile
-            (
-                scene.mesh(), "erosion", "erosion", fileDict
-            )
-        );
-        OFstream& os = balanceFile_->file();
-        balanceFile_->writeHeader
-        (
-            os,
+            scene.mesh(), "erosion", "erosion",
             "Eroded fines [kg]: eroded from the points since the start,"
             " suspended in the water, out through the patches since the"
-            " start, and the balance's defect over the eroded mass"
+            " start, and the balance's defect over the eroded mass",
+            wordList({"eroded", "suspended", "out", "defect"})
         );
-        balanceFile_->writeCommented(os, "Time");
-        for (const char* col : {"eroded", "suspended", "out", "defect"})
-        {
-            balanceFile_->writeTabbed(os, col);
-        }
-        os  << endl;
     }
 
     Info<< "Erosion of the soil's fines" << nl;

@@ -54,6 +54,10 @@ void Foam::physicsEffects::fluid::write()
 {
     lbm_.updateFields();
     lbm_.writePopulations();
+    if (lbm_.writesViscousStress())
+    {
+        lbm_.writeViscousStress();
+    }
 }
 
 

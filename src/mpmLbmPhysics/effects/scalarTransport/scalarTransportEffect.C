@@ -64,32 +64,20 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
 {
     if (dict_.getOrDefault<bool>("writeBalance", false))
     {
-        dictionary fileDict;
-        fileDict.add("writePrecision", 17);
-        balanceFile_.reset
-        (
-            new functionObjects::writeFile
-            (
-                scene.mesh(), "scalarTransport", "balance", fileDict
-            )
-        );
-        OFstream& os = balanceFile_->file();
-        balanceFile_->writeHeader
-        (
-            os,
-            "Balance of " + transport_.field().name()
-          + " [its units x m3]: content, added by sources, out through"
-            " each patch (negative: in), relative defect"
-        );
-        balanceFile_->writeCommented(os, "Time");
-        balanceFile_->writeTabbed(os, "content");
-        balanceFile_->writeTabbed(os, "sourced");
+        wordList columns({"content", "sourced"});
         for (const polyPatch& pp : scene.mesh().boundaryMesh())
         {
-            balanceFile_->writeTabbed(os, "out_" + pp.name());
+            columns.append("out_" + pp.name());
         }
-        balanceFile_->writeTabbed(os, "defect");
-        os  << endl;
+        columns.append("defect");
+        balanceFile_ = newStepFile
+        (
+            scene.mesh(), "scalarTransport", "balance",
+            "Balance of " + transport_.field().name()
+          + " [its units x m3]: content, added by sources, out through"
+            " each patch (negative: in), relative defect",
+            columns
+        );
     }
 
     transport_.report(Info);

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dragModel.H"
+#include "selectEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -34,9 +35,7 @@ void Foam::dragModel::notAllowed
     const string& reason
 )
 {
-    FatalIOErrorInFunction(dict)
-        << keyword << ' ' << value << " is not allowed: " << reason.c_str()
-        << exit(FatalIOError);
+    entryNotAllowed(dict, keyword, value, reason);
 }
 
 

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "erosionLaw.H"
+#include "selectEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -32,9 +33,7 @@ void Foam::erosionLaw::notAllowed
     const string& reason
 )
 {
-    FatalIOErrorInFunction(dict)
-        << keyword << ' ' << value << " is not allowed: " << reason.c_str()
-        << exit(FatalIOError);
+    entryNotAllowed(dict, keyword, value, reason);
 }
 
 
