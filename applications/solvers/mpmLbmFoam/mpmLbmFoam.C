@@ -35,6 +35,7 @@ Usage
 
 #include "fvCFD.H"
 #include "physicsScene.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -54,6 +55,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    checkControlDict(args);
     #include "createTime.H"
     #include "createMesh.H"
 

@@ -56,6 +56,8 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "caseChecks.H"
+#include "IFstream.H"
 #include "fvCFD.H"
 #include "latticeMesh.H"
 #include "materialPoints.H"
@@ -84,7 +86,12 @@ static label readPointsPerCell(const dictionary& dict)
 //- Gravity from constant/g (the gravity effect's), as the solver reads it;
 //  the old gravity keyword of constant/soilProperties is refused naming the
 //  new place
-static vector readGravity(const dictionary& soilDict, const fvMesh& mesh)
+static vector readGravity
+(
+    const dictionary& soilDict,
+    const fvMesh& mesh,
+    const bool twoD
+)
 {
     if (soilDict.found("gravity"))
     {
@@ -105,7 +112,10 @@ static vector readGravity(const dictionary& soilDict, const fvMesh& mesh)
     );
     if (gio.typeHeaderOk<uniformDimensionedVectorField>(true))
     {
-        gravity = uniformDimensionedVectorField(gio).value();
+        const uniformDimensionedVectorField g(gio);
+        gravity = g.value();
+        IFstream is(g.filePath());
+        checkInPlane(twoD, gravity, "value", dictionary(is));
     }
     return gravity;
 }
@@ -327,6 +337,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    checkControlDict(args);
     #include "createTime.H"
     #include "createMesh.H"
 
@@ -360,11 +371,15 @@ int main(int argc, char *argv[])
 
     const label n = readPointsPerCell(dict);
     const dictionary& materialsDict = soilDict.subDict("materials");
-    const vector gravity = readGravity(soilDict, mesh);
+    const vector gravity = readGravity(soilDict, mesh, lattice.twoD());
     const PtrList<materialPointRegion> regions
     (
         materialPointRegion::readList(dict, runTime, materialsDict, gravity)
     );
+    for (const materialPointRegion& reg : regions)
+    {
+        checkInPlane(lattice.twoD(), reg.velocity(), "velocity", reg.dict());
+    }
 
     pointField candidates;
     labelList candidateId;

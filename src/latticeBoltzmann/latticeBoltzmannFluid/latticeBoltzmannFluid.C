@@ -13,6 +13,7 @@ License
 
 #include "latticeBoltzmannFluid.H"
 #include "nodeFieldIO.H"
+#include "selectEntry.H"
 #include "lbmKernel.H"
 #include "vector2D.H"
 
@@ -77,14 +78,27 @@ void Foam::latticeBoltzmannFluid::checkUnits() const
     }
     if (tauMinusHalf < collision_->marginalTauMinusHalf())
     {
+        // Advice the case does not follow yet
+        string advice;
+        const word model = collision_->type();
+        if (model != "regularized" && model != "MRT")
+        {
+            advice += "collisionModel regularized or MRT, ";
+        }
+        advice += "a smaller dx, a larger deltaT (if the Mach number allows)";
+        if (!(smagorinsky_ > 0))
+        {
+            advice += ", smagorinskyConstant 0.1";
+        }
         WarningInFunction
             << "tau - 1/2 = " << tauMinusHalf << " is below "
             << collision_->marginalTauMinusHalf() << ", where collision model "
-            << collision_->type() << " is known to lose stability unless the"
+            << model << " is known to lose stability unless the"
             << " flow is well resolved." << nl
-            << "    To stay stable: use collisionModel regularized or MRT,"
-            << " a smaller dx, a larger deltaT (if the Mach number allows),"
-            << " or smagorinskyConstant 0.1." << endl;
+            << "    To stay stable: " << advice.c_str() << "."
+            << (smagorinsky_ > 0 ? " (The Smagorinsky model the case uses"
+                " raises the local tau where the flow shears.)" : "")
+            << endl;
     }
 }
 
@@ -347,6 +361,32 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
             << exit(FatalIOError);
     }
 
+    if (U_.dimensions() != dimVelocity)
+    {
+        FatalErrorInFunction
+            << "Field U in " << U_.objectPath() << " has dimensions "
+            << U_.dimensions() << "; the lattice Boltzmann water expects the"
+            << " velocity in m/s, dimensions " << dimVelocity
+            << exit(FatalError);
+    }
+    if (lattice_.twoD())
+    {
+        // (a 2D scene moves in its plane: refused where the field gives
+        // anything else, on any processor)
+        scalar Uz = 0;
+        for (const vector& u : U_.primitiveField())
+        {
+            Uz = max(Uz, mag(u.z()));
+        }
+        if (returnReduce(Uz, maxOp<scalar>()) > 0)
+        {
+            FatalErrorInFunction
+                << "Field U in " << U_.objectPath() << " has a z component"
+                << " (up to " << returnReduce(Uz, maxOp<scalar>())
+                << " m/s) in a 2D case (one cell thick in z): the water"
+                << " moves in its plane" << exit(FatalError);
+        }
+    }
     if (p_.dimensions() != dimPressure)
     {
         FatalErrorInFunction
@@ -374,6 +414,14 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     }
     reduce(Umax, maxOp<scalar>());
     const scalar Uref = dict_.getOrDefault<scalar>("Uref", Umax);
+    if (dict_.found("Uref") && (!(Uref > 0) || !std::isfinite(Uref)))
+    {
+        entryNotAllowed
+        (
+            dict_, "Uref", Uref,
+            "the speed scale of the Mach check must be positive [m/s]"
+        );
+    }
 
     Info<< "Lattice Boltzmann water" << nl
         << "    velocity set " << velocitySet_->type() << nl;

@@ -38,6 +38,20 @@ inline bool isLocal(const Foam::label k)
     return k == Foam::latticeMesh::OWNED || k == Foam::latticeMesh::HALO;
 }
 
+// The patches the soil can meet (neither coupled nor empty)
+Foam::wordList wallPatchNames(const Foam::polyBoundaryMesh& patches)
+{
+    Foam::wordList names;
+    for (const Foam::polyPatch& pp : patches)
+    {
+        if (!pp.coupled() && !Foam::isA<Foam::emptyPolyPatch>(pp))
+        {
+            names.append(pp.name());
+        }
+    }
+    return names;
+}
+
 } // End anonymous namespace
 
 
@@ -49,6 +63,23 @@ void Foam::soilWalls::readWalls(const dictionary& walls)
 
     patchWall_.setSize(patches.size(), wallType::slip);
     patchFriction_.setSize(patches.size(), 0.0);
+
+    for (const entry& e : walls)
+    {
+        if (e.keyword().isPattern())
+        {
+            continue;
+        }
+        const word& name = e.keyword();
+        const label patchi = patches.findPatchID(name);
+        if (patchi < 0)
+        {
+            FatalIOErrorInFunction(walls)
+                << "walls: " << name << " is not a patch of the mesh: the"
+                << " patches the soil can meet are "
+                << wallPatchNames(patches) << exit(FatalIOError);
+        }
+    }
 
     wordList missing;
     forAll(patches, patchi)

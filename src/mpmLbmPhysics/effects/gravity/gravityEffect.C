@@ -12,6 +12,8 @@ License
 
 \*---------------------------------------------------------------------------*/
 
+#include "caseChecks.H"
+#include "IFstream.H"
 #include "gravityEffect.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
@@ -58,6 +60,10 @@ Foam::physicsEffects::gravity::gravity(physicsScene& scene)
             << exit(FatalError);
     }
     g_ = g.value();
+    {
+        IFstream is(g.filePath());
+        checkInPlane(scene.lattice().twoD(), g_, "value", dictionary(is));
+    }
 
     // The phases that feel it: all those in the scene unless listed
     const dictionary& dict = scene.dict();

@@ -1,0 +1,100 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "caseChecks.H"
+#include "IFstream.H"
+#include "selectEntry.H"
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+void Foam::checkControlDict(const argList& args)
+{
+    const fileName path =
+        args.rootPath()/args.globalCaseName()/"system"/"controlDict";
+    IFstream is(path);
+    if (!is.good())
+    {
+        // (OpenFOAM's own message names the missing file)
+        return;
+    }
+    const dictionary dict(is);
+
+    auto positive = [&](const word& key)
+    {
+        if (!dict.found(key))
+        {
+            return;
+        }
+        // A number: anything else is refused by OpenFOAM itself
+        ITstream& its = dict.lookup(key);
+        if (its.size() != 1 || !its[0].isNumber())
+        {
+            return;
+        }
+        const scalar value = its[0].number();
+        if (!(value > 0) || !std::isfinite(value))
+        {
+            entryNotAllowed
+            (
+                dict, key, value, "it must be a positive, finite number"
+            );
+        }
+    };
+    positive("deltaT");
+    positive("writeInterval");
+
+    if (dict.found("endTime"))
+    {
+        const scalar endTime = dict.get<scalar>("endTime");
+        const word startFrom =
+            dict.getOrDefault<word>("startFrom", "latestTime");
+        const scalar startTime = dict.getOrDefault<scalar>("startTime", 0);
+        if (!std::isfinite(endTime) || endTime < 0)
+        {
+            entryNotAllowed
+            (
+                dict, "endTime", endTime, "it must be >= 0 and finite"
+            );
+        }
+        if (startFrom == "startTime" && endTime < startTime)
+        {
+            entryNotAllowed
+            (
+                dict, "endTime", endTime,
+                "the run starts at startTime " + Foam::name(startTime)
+              + ": it must not end before it"
+            );
+        }
+    }
+}
+
+
+void Foam::checkInPlane
+(
+    const bool twoD,
+    const vector& value,
+    const word& keyword,
+    const dictionary& dict
+)
+{
+    if (twoD && value.z() != 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << keyword << " " << value << " is not allowed: this case is"
+            << " 2D (one cell thick in z), so its z component must be 0"
+            << exit(FatalIOError);
+    }
+}
+
+
+// ************************************************************************* //
