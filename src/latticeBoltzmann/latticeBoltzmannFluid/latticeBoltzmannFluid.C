@@ -14,6 +14,7 @@ License
 #include "latticeBoltzmannFluid.H"
 #include "nodeFieldIO.H"
 #include "selectEntry.H"
+#include "caseChecks.H"
 #include "lbmKernel.H"
 #include "vector2D.H"
 
@@ -359,6 +360,19 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
             << "smagorinskyConstant " << smagorinsky_ << " is not allowed:"
             << " it must be >= 0 (0: no sub-grid model; 0.1 to 0.17 usual)"
             << exit(FatalIOError);
+    }
+
+    // Damaged initial fields stop here (binary NaN or Inf, 1e400)
+    checkFinite(U_.primitiveField(), U_.objectPath(), "internalField");
+    checkFinite(p_.primitiveField(), p_.objectPath(), "internalField");
+    forAll(U_.boundaryField(), patchi)
+    {
+        const word entry
+        (
+            "boundaryField." + U_.boundaryField()[patchi].patch().name()
+        );
+        checkFinite(U_.boundaryField()[patchi], U_.objectPath(), entry);
+        checkFinite(p_.boundaryField()[patchi], p_.objectPath(), entry);
     }
 
     if (U_.dimensions() != dimVelocity)

@@ -11,6 +11,7 @@ License
 
 \*---------------------------------------------------------------------------*/
 
+#include "caseChecks.H"
 #include "materialPoints.H"
 #include "passiveParticleCloud.H"
 #include "IOField.H"
@@ -339,6 +340,12 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
     const bool haveFines = n && readField(cloud, "fines", fines);
     if (returnReduce(haveFines, orOp<bool>()))
     {
+        checkFinite
+        (
+            fines,
+            mesh.time().path()/timeName/"lagrangian"/cloudName/"fines",
+            "values"
+        );
         carriesFines = true;
         if (!haveFines)
         {
@@ -402,6 +409,20 @@ void Foam::materialPoints::readFields
     {
         C = Zero;
     }
+
+    // Damaged fields stop here, naming the file and the point
+    const fileName dir(where/"lagrangian"/cloudName);
+    checkFinite(x, dir/"x", "values");
+    checkFinite(v, dir/"U", "values");
+    checkFinite(m, dir/"mass", "values");
+    checkFinite(V, dir/"volume", "values");
+    checkFinite(V0, dir/"initialVolume", "values");
+    checkFinite(sigma, dir/"stress", "values");
+    checkFinite(plasticStrain, dir/"plasticStrain", "values");
+    checkFinite(halfLength, dir/"halfLength", "values");
+    checkFinite(porosity, dir/"porosity", "values");
+    checkFinite(F, dir/"F", "values");
+    checkFinite(C, dir/"C", "values");
 }
 
 

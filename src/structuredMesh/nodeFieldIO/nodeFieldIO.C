@@ -13,6 +13,7 @@ License
 
 #include "nodeFieldIO.H"
 #include "volFields.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -93,6 +94,7 @@ void Foam::readNodeField
         nodeFieldIO(lattice, name, IOobject::MUST_READ),
         lattice.mesh()
     );
+    checkFinite(fld.primitiveField(), fld.objectPath(), "internalField");
     const labelList& cellNode = lattice.cellNode();
     forAll(cellNode, celli)
     {
