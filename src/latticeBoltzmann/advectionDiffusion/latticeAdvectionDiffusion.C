@@ -498,7 +498,6 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
     sourced_(0),
     content0_(0),
     limited_(0),
-    v2Max_(0),
     PhiMin_(0),
     nSteps_(0),
     initialised_(false)
@@ -575,7 +574,6 @@ void Foam::latticeAdvectionDiffusion::step
 
     sourced_ += st.sourced*lattice_.cellVolume();
     limited_ = st.limited;
-    v2Max_ = st.v2Max;
     PhiMin_ = st.PhiMin;
     ++nSteps_;
     AisCurrent_ = !AisCurrent_;

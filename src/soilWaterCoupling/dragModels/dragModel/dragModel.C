@@ -27,18 +27,6 @@ constexpr Foam::scalar Foam::dragModel::phiMax;
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-void Foam::dragModel::notAllowed
-(
-    const dictionary& dict,
-    const word& keyword,
-    const scalar value,
-    const string& reason
-)
-{
-    entryNotAllowed(dict, keyword, value, reason);
-}
-
-
 Foam::scalar Foam::dragModel::readPositiveCoeff
 (
     const word& keyword,
@@ -50,7 +38,7 @@ Foam::scalar Foam::dragModel::readPositiveCoeff
     // Written so that NaN fails
     if (!(value > 0))
     {
-        notAllowed
+        entryNotAllowed
         (
             coeffs_, keyword, value, "the coefficient must be > 0 (default "
           + Foam::name(deflt) + ")"
@@ -72,11 +60,11 @@ Foam::dragModel::dragModel(const word& type, const dictionary& dict)
     // Written so that NaN fails every test
     if (!(d_ > 0))
     {
-        notAllowed(dict, "d", d_, "the grain diameter must be > 0 [m]");
+        entryNotAllowed(dict, "d", d_, "the grain diameter must be > 0 [m]");
     }
     if (!(rhoFluid_ > 0))
     {
-        notAllowed
+        entryNotAllowed
         (
             dict, "rhoFluid", rhoFluid_,
             "the fluid density must be > 0 [kg/m3]"
@@ -84,7 +72,7 @@ Foam::dragModel::dragModel(const word& type, const dictionary& dict)
     }
     if (!(muFluid_ > 0))
     {
-        notAllowed
+        entryNotAllowed
         (
             dict, "muFluid", muFluid_,
             "the (physical) fluid dynamic viscosity must be > 0 [Pa s]"

@@ -25,18 +25,6 @@ namespace Foam
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
 
-void Foam::erosionLaw::notAllowed
-(
-    const dictionary& dict,
-    const word& keyword,
-    const scalar value,
-    const string& reason
-)
-{
-    entryNotAllowed(dict, keyword, value, reason);
-}
-
-
 Foam::scalar Foam::erosionLaw::readCoeff
 (
     const word& keyword,
@@ -49,7 +37,7 @@ Foam::scalar Foam::erosionLaw::readCoeff
     // Written so that NaN fails
     if (positive ? !(value > 0) : !(value >= 0))
     {
-        notAllowed
+        entryNotAllowed
         (
             coeffs_, keyword, value,
             string(positive ? "it must be > 0 " : "it must be >= 0 ") + units
@@ -57,7 +45,7 @@ Foam::scalar Foam::erosionLaw::readCoeff
     }
     if (!std::isfinite(value))
     {
-        notAllowed(coeffs_, keyword, value, "it must be finite " + units);
+        entryNotAllowed(coeffs_, keyword, value, "it must be finite " + units);
     }
     return value;
 }
@@ -75,15 +63,15 @@ Foam::erosionLaw::erosionLaw(const word& type, const dictionary& dict)
 {
     if (!(rhoFluid_ > 0))
     {
-        notAllowed(dict, "rhoFluid", rhoFluid_, "it must be > 0 [kg/m3]");
+        entryNotAllowed(dict, "rhoFluid", rhoFluid_, "it must be > 0 [kg/m3]");
     }
     if (!(nuFluid_ > 0))
     {
-        notAllowed(dict, "nuFluid", nuFluid_, "it must be > 0 [m2/s]");
+        entryNotAllowed(dict, "nuFluid", nuFluid_, "it must be > 0 [m2/s]");
     }
     if (!(rhoSolid_ > rhoFluid_))
     {
-        notAllowed
+        entryNotAllowed
         (
             dict, "rhoSolid", rhoSolid_,
             "the grains must be denser than the water (rhoFluid "
@@ -92,7 +80,7 @@ Foam::erosionLaw::erosionLaw(const word& type, const dictionary& dict)
     }
     if (!(g_ >= 0) || !std::isfinite(g_))
     {
-        notAllowed(dict, "g", g_, "it must be >= 0 and finite [m/s2]");
+        entryNotAllowed(dict, "g", g_, "it must be >= 0 and finite [m/s2]");
     }
 }
 

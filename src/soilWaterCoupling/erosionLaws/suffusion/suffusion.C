@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "suffusion.H"
+#include "selectEntry.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -38,7 +39,7 @@ Foam::erosionLaws::suffusion::suffusion(const dictionary& dict)
 {
     if (!(cSeed_ < 1))
     {
-        notAllowed
+        entryNotAllowed
         (
             coeffs_, "seedConcentration", cSeed_,
             "it is a volume fraction of the pore water, in [0, 1)"

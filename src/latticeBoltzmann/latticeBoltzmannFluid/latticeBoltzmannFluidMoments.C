@@ -1,0 +1,243 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+Description
+    latticeBoltzmannFluid: what the populations give (the fields U, p, rho,
+    the nodal velocity, the viscous stress, momentum and mass) and their
+    output; the lattice's set-up and step are in latticeBoltzmannFluid.C.
+
+\*---------------------------------------------------------------------------*/
+
+#include "latticeBoltzmannFluid.H"
+#include "nodeFieldIO.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& w = velocitySet_->w();
+
+    // The populations the next step collides: the current ones pulled,
+    // with the halo and the boundaries' wall slots
+    scratch_ = current();
+    halo_.exchangeSelected(scratch_.data(), nBox);
+    boundaries_->fill
+    (
+        scratch_.data(),
+        porosity_.size() ? porosity_.cdata() : nullptr
+    );
+
+    const scalar factor = 1 - 0.5/units_.tau();
+    const scalar toPa = units_.rho0()*sqr(units_.velocityScale());
+    scalarList f(Q);
+    sigma.setSize(nBox);
+    sigma = Zero;
+    for (const label n : lattice_.cellNode())
+    {
+        scalar rho = 0;
+        vector j(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            f[q] = scratch_[q*nBox + n - offset_[q]];
+            rho += f[q];
+            j += f[q]*vector(c[q]);
+        }
+        const vector F = nodeForce(n, rho);
+        const vector u = (j + 0.5*F)/rho;
+        const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
+        const scalar u2 = magSqr(u)/eps;
+
+        symmTensor Pi(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            const vector cq(c[q]);
+            const scalar cu = cq & u;
+            const scalar feq =
+                w[q]*rho*(1 + 3*cu + 4.5*cu*cu/eps - 1.5*u2);
+            Pi += (f[q] - feq)*sqr(cq);
+        }
+        sigma[n] = -factor*toPa*(Pi + symm(F*u));
+    }
+}
+
+
+void Foam::latticeBoltzmannFluid::writeViscousStress()
+{
+    List<symmTensor> sigma;
+    viscousStress(sigma);
+    volSymmTensorField fld
+    (
+        IOobject
+        (
+            "viscousStress",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_,
+        dimensionedSymmTensor(dimPressure, Zero)
+    );
+    const labelList& cellNode = lattice_.cellNode();
+    symmTensorField& values = fld.primitiveFieldRef();
+    forAll(cellNode, celli)
+    {
+        values[celli] = sigma[cellNode[celli]];
+    }
+    fld.write();
+}
+
+
+Foam::vector Foam::latticeBoltzmannFluid::momentum() const
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& f = current();
+    vector j(Zero);
+    for (const label n : lattice_.cellNode())
+    {
+        for (label q = 0; q < Q; ++q)
+        {
+            j += f[q*nBox + n]*vector(c[q]);
+        }
+    }
+    reduce(j, sumOp<vector>());
+    return j*units_.rho0()*units_.velocityScale()*lattice_.cellVolume();
+}
+
+
+Foam::scalar Foam::latticeBoltzmannFluid::massDefect() const
+{
+    // Against the initial mass plus what the displacement source added
+    Vector2D<scalar> m(stats_.mass, displacedMass_);
+    reduce(m, sumOp<Vector2D<scalar>>());
+    return m.x()/(mass0_ + m.y()) - 1.0;
+}
+
+
+Foam::scalar Foam::latticeBoltzmannFluid::memoryBytes() const
+{
+    return returnReduce
+    (
+        scalar(sizeof(scalar))
+       *(fA_.size() + fB_.size() + 11*Fx_.size() + porosity_.size()),
+        sumOp<scalar>()
+    );
+}
+
+
+Foam::label Foam::latticeBoltzmannFluid::nNodes() const
+{
+    return returnReduce(lattice_.nOwned(), sumOp<label>());
+}
+
+
+void Foam::latticeBoltzmannFluid::updateFields()
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const labelList& cellNode = lattice_.cellNode();
+    const scalarList& f = current();
+
+    vectorField& U = U_.primitiveFieldRef();
+    scalarField& p = p_.primitiveFieldRef();
+    scalarField& rhoPhys = rho_.primitiveFieldRef();
+
+    forAll(cellNode, celli)
+    {
+        const label n = cellNode[celli];
+        scalar rho = 0;
+        vector j(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            const scalar fq = f[q*nBox + n];
+            rho += fq;
+            j += fq*vector(c[q]);
+        }
+        // Post-collision momentum is rho u + F/2. In a porous medium u is
+        // the superficial velocity (the Darcy flux) and p the pore
+        // pressure c_s^2 (rho - 1)/eps (relative to the reference)
+        const vector F = nodeForce(n, rho);
+        const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
+        U[celli] = units_.toPhysical((j - 0.5*F)/rho);
+        p[celli] = units_.pressure(rho)/eps;
+        rhoPhys[celli] = (rho - (1 - eps))*units_.rho0();
+    }
+
+    U_.correctBoundaryConditions();
+    p_.correctBoundaryConditions();
+    rho_.correctBoundaryConditions();
+}
+
+
+void Foam::latticeBoltzmannFluid::nodalVelocity
+(
+    List<vector>& u,
+    const bool carried
+) const
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& f = current();
+
+    u.setSize(nBox);
+    u = Zero;
+    for (const label n : lattice_.cellNode())
+    {
+        scalar rho = 0;
+        vector j(Zero);
+        for (label q = 0; q < Q; ++q)
+        {
+            const scalar fq = f[q*nBox + n];
+            rho += fq;
+            j += fq*vector(c[q]);
+        }
+        if (!carried)
+        {
+            j -= 0.5*nodeForce(n, rho);
+        }
+        u[n] = units_.toPhysical(j/rho);
+    }
+}
+
+
+void Foam::latticeBoltzmannFluid::writePopulations() const
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const scalarList& f = current();
+    for (label q = 0; q < Q; ++q)
+    {
+        writeNodeField(lattice_, "lbmF" + Foam::name(q), f.cdata() + q*nBox);
+    }
+
+    if (displacement_)
+    {
+        // The porosity the populations hold (a restart continues the
+        // displacement source from it)
+        writeNodeField
+        (
+            lattice_,
+            "lbmPorosity",
+            (heldPorosity_.size() ? heldPorosity_ : porosity_).cdata()
+        );
+    }
+}
+
+
+// ************************************************************************* //
