@@ -36,6 +36,7 @@ Usage
 #include "fvCFD.H"
 #include "physicsScene.H"
 #include "caseChecks.H"
+#include "restartManifest.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -55,11 +56,17 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+
+    // The input is read with overflow untrapped (caseChecks.H)
+    const bool overflowTrapped = suspendOverflowTrap();
     checkControlDict(args);
+    restartManifest::checkWritable(args);
+    restartManifest::setAsideIncompleteTimes(args);
     #include "createTime.H"
     #include "createMesh.H"
 
     physicsScene scene(runTime, mesh);
+    restoreOverflowTrap(overflowTrapped);
 
     if (args.found("estimate"))
     {

@@ -57,6 +57,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "caseChecks.H"
+#include "restartManifest.H"
 #include "IFstream.H"
 #include "fvCFD.H"
 #include "latticeMesh.H"
@@ -286,6 +287,33 @@ static void fillPoints
         points.id[k] = candidateId[i];
         ++k;
     }
+
+    // A geostatic surface below points of its region would leave them
+    // unstressed (the stress grows with the depth below the surface only)
+    scalarList top(regions.size(), -GREAT);
+    forAll(region, i)
+    {
+        if (region[i] >= 0)
+        {
+            top[region[i]] = max(top[region[i]], candidates[i] & up);
+        }
+    }
+    Pstream::listCombineGather(top, maxEqOp<scalar>());
+    Pstream::listCombineScatter(top);
+    forAll(regions, r)
+    {
+        const materialPointRegion& reg = regions[r];
+        if (reg.geostatic() && top[r] > reg.surfaceHeight() + 1e-9*lattice.dx())
+        {
+            FatalIOErrorInFunction(reg.dict())
+                << "geostaticCoeffs/surface " << reg.surfaceHeight() << " is not allowed:"
+                << " region " << reg.name() << " has points up to "
+                << top[r] << " m above the origin along -g, which would"
+                << " start without stress. Set surface at or above the"
+                << " region's top (the ground surface the geostatic stress"
+                << " grows from)." << exit(FatalIOError);
+        }
+    }
     if (!globalIds)
     {
         // (more sub-cells than labels: numbered in processor order)
@@ -337,6 +365,9 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    // A number such as 1e400 in the input: the parser's error, not a trap
+    // (caseChecks.H); the cloud's values are checked where it is read
+    suspendOverflowTrap();
     checkControlDict(args);
     #include "createTime.H"
     #include "createMesh.H"
@@ -398,7 +429,23 @@ int main(int argc, char *argv[])
         regions, candidates, candidateId, region, globalIds, lattice, n,
         gravity, points
     );
+    // The cloud and, after it, the counts and totals a run starting here
+    // must find in it (a processor's cloud lost by decomposePar or by hand)
+    restartManifest::beginWrite(runTime, false);
     points.write(mesh, lattice);
+    restartManifest::stateTable state;
+    state.set("soilPoints", points.size());
+    state.set("soilMass", sum(points.m));
+    restartManifest::endWrite
+    (
+        runTime,
+        "setMaterialPoints",
+        state,
+        points.size()
+      ? wordList(1, "lagrangian"/materialPoints::cloudName)
+      : wordList(),
+        false
+    );
 
     const scalar seconds = start.elapsed();
     report

@@ -686,6 +686,17 @@ void Foam::latticeAdvectionDiffusion::writePopulations() const
 }
 
 
+Foam::wordList Foam::latticeAdvectionDiffusion::populationFiles() const
+{
+    wordList names(initialised_ ? Q_ : 0);
+    forAll(names, q)
+    {
+        names[q] = C_.name() + "G" + Foam::name(q);
+    }
+    return names;
+}
+
+
 Foam::scalar Foam::latticeAdvectionDiffusion::memoryBytes() const
 {
     return returnReduce

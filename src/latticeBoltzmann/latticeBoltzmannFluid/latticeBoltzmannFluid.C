@@ -77,6 +77,29 @@ void Foam::latticeBoltzmannFluid::checkUnits() const
             << units_.nuLattice() << "): the lattice Boltzmann method needs"
             << " a positive viscosity." << exit(FatalIOError);
     }
+    {
+        // The method's expansion (Chapman-Enskog) needs the particles'
+        // mean free path, about tau - 1/2 lattice spacings, well below the
+        // flow's size: beyond the domain's smallest extent it models a
+        // rarefied gas, not a liquid
+        const labelVector& N = lattice_.globalN();
+        label nMin = labelMax;
+        for (direction d = 0; d < lattice_.nDim(); ++d)
+        {
+            nMin = min(nMin, N[d]);
+        }
+        if (tauMinusHalf > nMin)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "nu " << units_.nu() << " is not allowed with dx "
+                << units_.dx() << " and deltaT " << units_.dt() << ": tau"
+                << " - 1/2 = " << tauMinusHalf << " exceeds the domain's "
+                << nMin << " cells across, so the lattice would model a"
+                << " rarefied gas, not water." << nl
+                << "    Check nu's units (m2/s), or use a smaller deltaT"
+                << " (tau - 1/2 = 3 nu deltaT/dx^2)." << exit(FatalIOError);
+        }
+    }
     if (tauMinusHalf < collision_->marginalTauMinusHalf())
     {
         // Advice the case does not follow yet

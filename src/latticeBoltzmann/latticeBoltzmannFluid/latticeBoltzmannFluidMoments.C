@@ -216,6 +216,39 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
 }
 
 
+Foam::scalar Foam::latticeBoltzmannFluid::populationSum() const
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const scalarList& f = current();
+    scalar sum = 0;
+    for (const label n : lattice_.cellNode())
+    {
+        for (label q = 0; q < Q; ++q)
+        {
+            sum += f[q*nBox + n];
+        }
+    }
+    return sum;
+}
+
+
+Foam::wordList Foam::latticeBoltzmannFluid::populationFiles() const
+{
+    const label Q = velocitySet_->Q();
+    wordList names(Q);
+    for (label q = 0; q < Q; ++q)
+    {
+        names[q] = "lbmF" + Foam::name(q);
+    }
+    if (displacement_)
+    {
+        names.append("lbmPorosity");
+    }
+    return names;
+}
+
+
 void Foam::latticeBoltzmannFluid::writePopulations() const
 {
     const label Q = velocitySet_->Q();

@@ -206,6 +206,9 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
 
     Info<< "Scene effects: " << names_ << nl << endl;
 
+    // A restart's files as written, before anything reads them
+    restartManifest::checkFiles(runTime);
+
     // The lattice every effect shares, with the widest halo they declare
     label haloWidth = 1;
     for (const word& name : names_)
@@ -225,6 +228,16 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
     }
     checkRequirements();
     planSteps();
+
+    // The state read as written (a processor's missing cloud, say)
+    {
+        restartManifest::stateTable state;
+        forAll(effects_, i)
+        {
+            effects_[i].restartState(state);
+        }
+        restartManifest::checkState(runTime, state);
+    }
     effectTime_.setSize(effects_.size(), 0);
 
     // What the run will cost
@@ -297,12 +310,49 @@ void Foam::physicsScene::write()
     }
     // The effects' outputs, then the registered fields (U, p, rho, ...):
     // all counted as writing in the run's cost
+    // A time is complete or set aside at a restart (restartManifest)
     const clockValue t0(clockValue::now());
+    restartManifest::beginWrite(runTime_);
+    // A failed write (a full disk) reported as what it is, with what to do
+    const bool throwing = FatalError.throwExceptions();
+    const bool ioThrowing = FatalIOError.throwExceptions();
+    string failure;
+    try
+    {
+        forAll(effects_, i)
+        {
+            effects_[i].write();
+        }
+        if (!runTime_.write())
+        {
+            failure = "OpenFOAM could not write the registered fields";
+        }
+    }
+    catch (const Foam::error& err)
+    {
+        failure = err.message();
+    }
+    FatalError.throwExceptions(throwing);
+    FatalIOError.throwExceptions(ioThrowing);
+    if (!failure.empty())
+    {
+        FatalErrorInFunction
+            << "Writing time " << runTime_.timeName() << " in "
+            << runTime_.timePath() << " failed:" << nl << "    "
+            << failure.c_str() << nl
+            << "    Is the disk full, or the folder not writable? The time"
+            << " keeps the marker " << restartManifest::incompleteMarker
+            << ": a restart from the latest time sets it aside and starts"
+            << " from the last complete time." << exit(FatalError);
+    }
+    restartManifest::stateTable state;
+    DynamicList<word> exact;
     forAll(effects_, i)
     {
-        effects_[i].write();
+        effects_[i].restartState(state);
+        exact.append(effects_[i].stateFiles());
     }
-    runTime_.write();
+    restartManifest::endWrite(runTime_, "mpmLbmFoam", state, exact);
     writeTime_ += t0.elapsed();
 }
 
@@ -342,9 +392,22 @@ void Foam::physicsScene::summary() const
 
 void Foam::physicsScene::estimate()
 {
-    const clockValue t0(clockValue::now());
+    if (nStepsTotal_ <= 0)
+    {
+        Info<< nl << "Estimate: the case is at its endTime ("
+            << runTime_.endTime().value() << " s): there are no steps to"
+            << " run. Raise endTime in system/controlDict to estimate a"
+            << " continuation." << nl << "    Nothing was written." << nl
+            << endl;
+        return;
+    }
+
+    // The first steps are slower (memory touched for the first time,
+    // caches cold): timed from the third on, as a long run sees them
+    const label nWarmUp = min(label(2), nStepsTotal_ - 1);
+    clockValue t0(clockValue::now());
     label n = 0;
-    while (runTime_.run() && n < 50)
+    while (runTime_.run() && n < 50 + nWarmUp)
     {
         ++runTime_;
         // (not endStep: its per-step outputs would write)
@@ -356,15 +419,20 @@ void Foam::physicsScene::estimate()
             }
         }
         ++n;
-        bool enough = scalar(t0.elapsed()) > 3.0;
+        if (n == nWarmUp)
+        {
+            t0.update();
+        }
+        bool enough = n > nWarmUp && scalar(t0.elapsed()) > 3.0;
         reduce(enough, orOp<bool>());
         if (enough)
         {
             break;
         }
     }
+    n = max(n - nWarmUp, label(1));
     const scalar wall = t0.elapsed();
-    const scalar perStep = wall/max(n, label(1));
+    const scalar perStep = wall/n;
     scalar memory = 0;
     forAll(effects_, i)
     {

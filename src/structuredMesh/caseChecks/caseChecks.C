@@ -14,6 +14,7 @@ License
 #include "caseChecks.H"
 #include "IFstream.H"
 #include "selectEntry.H"
+#include <fenv.h>
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -93,6 +94,28 @@ void Foam::checkInPlane
             << keyword << " " << value << " is not allowed: this case is"
             << " 2D (one cell thick in z), so its z component must be 0"
             << exit(FatalIOError);
+    }
+}
+
+
+bool Foam::suspendOverflowTrap()
+{
+    const bool trapped = fegetexcept() & FE_OVERFLOW;
+    if (trapped)
+    {
+        fedisableexcept(FE_OVERFLOW);
+    }
+    return trapped;
+}
+
+
+void Foam::restoreOverflowTrap(const bool wasTrapped)
+{
+    if (wasTrapped)
+    {
+        // (a flag raised while reading must not fire at once)
+        feclearexcept(FE_OVERFLOW);
+        feenableexcept(FE_OVERFLOW);
     }
 }
 

@@ -369,6 +369,12 @@ void Foam::physicsEffects::erosion::write()
 }
 
 
+Foam::wordList Foam::physicsEffects::erosion::stateFiles() const
+{
+    return suspension_.populationFiles();
+}
+
+
 Foam::scalar Foam::physicsEffects::erosion::memoryBytes() const
 {
     return

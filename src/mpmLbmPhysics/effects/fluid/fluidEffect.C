@@ -61,6 +61,27 @@ void Foam::physicsEffects::fluid::write()
 }
 
 
+void Foam::physicsEffects::fluid::restartState
+(
+    restartManifest::stateTable& state
+) const
+{
+    state.set("waterNodes", lbm_.lattice().cellNode().size());
+    // (water that was set at equilibrium from U and p has no written mass
+    // to be compared with)
+    if (lbm_.restarted() || lbm_.nSteps() > 0)
+    {
+        state.set("waterLatticeMass", lbm_.populationSum());
+    }
+}
+
+
+Foam::wordList Foam::physicsEffects::fluid::stateFiles() const
+{
+    return lbm_.populationFiles();
+}
+
+
 Foam::scalar Foam::physicsEffects::fluid::updatesPerStep() const
 {
     return lbm_.nNodes();

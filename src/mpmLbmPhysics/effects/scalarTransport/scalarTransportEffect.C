@@ -155,6 +155,12 @@ void Foam::physicsEffects::scalarTransport::write()
 }
 
 
+Foam::wordList Foam::physicsEffects::scalarTransport::stateFiles() const
+{
+    return transport_.populationFiles();
+}
+
+
 Foam::scalar Foam::physicsEffects::scalarTransport::updatesPerStep() const
 {
     return fluid_.nNodes();

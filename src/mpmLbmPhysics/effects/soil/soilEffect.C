@@ -76,6 +76,27 @@ void Foam::physicsEffects::soil::write()
 }
 
 
+void Foam::physicsEffects::soil::restartState
+(
+    restartManifest::stateTable& state
+) const
+{
+    const materialPoints& p = mpm_.points();
+    state.set("soilPoints", p.size());
+    state.set("soilMass", sum(p.m));
+}
+
+
+Foam::wordList Foam::physicsEffects::soil::stateFiles() const
+{
+    // (a processor without points writes no cloud)
+    return
+        mpm_.points().size()
+      ? wordList(1, "lagrangian"/materialPoints::cloudName)
+      : wordList();
+}
+
+
 Foam::scalar Foam::physicsEffects::soil::updatesPerStep() const
 {
     return mpm_.nPoints();
