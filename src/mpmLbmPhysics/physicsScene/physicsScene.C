@@ -407,7 +407,14 @@ void Foam::physicsScene::estimate()
     const label nWarmUp = min(label(2), nStepsTotal_ - 1);
     clockValue t0(clockValue::now());
     label n = 0;
-    while (runTime_.run() && n < 50 + nWarmUp)
+    // (not Time::run(): at a write time it executes the function objects,
+    // which write their state into a time folder)
+    while
+    (
+        runTime_.value() + 0.5*runTime_.deltaTValue()
+      < runTime_.endTime().value()
+     && n < 50 + nWarmUp
+    )
     {
         ++runTime_;
         // (not endStep: its per-step outputs would write)
@@ -444,21 +451,40 @@ void Foam::physicsScene::estimate()
     // Halving dx at a fixed lattice Mach number (acoustic scaling) halves
     // the time step: nodes x 2^D, steps x 2. The soil's points and
     // sub-steps scale alike (CFL). At fixed tau (diffusive scaling) the
-    // water needs 4 times the steps instead of 2.
+    // water needs 4 times the steps instead of 2. A scene without water
+    // has only the soil's CFL scaling.
+    const bool water = names_.found("fluid");
     const scalar total = perStep*nStepsTotal_;
+    auto duration = [](const scalar t)
+    {
+        return
+            Foam::name(t) + " s"
+          + (t > 3600 ? " (" + Foam::name(t/3600) + " h)" : std::string());
+    };
+    // Wall time with the nodes (and points) times nodes and the steps
+    // times steps at fixed lattice Mach (the soil's CFL alike), steps^2 at
+    // fixed tau
+    auto scaled = [&](const scalar nodes, const scalar steps)
+    {
+        return
+            water
+          ? duration(total*nodes*steps) + " at fixed lattice Mach ("
+          + duration(total*nodes*steps*steps) + " at fixed tau)"
+          : duration(total*nodes*steps) + " (the soil's CFL: steps x "
+          + Foam::name(steps) + ")";
+    };
     Info<< nl << "Estimate from " << n << " steps (" << perStep
-        << " s per step)" << nl
-        << "    case as set up:  wall time " << total << " s ("
-        << total/3600 << " h), memory " << memory/1048576.0 << " MiB" << nl
-        << "    dx halved:       wall time " << total*nodesFactor*2 << " s"
-        << " at fixed lattice Mach (" << total*nodesFactor*4
-        << " s at fixed tau), memory " << memory*nodesFactor/1048576.0
-        << " MiB" << nl
-        << "    dx doubled:      wall time " << total/(nodesFactor*2) << " s"
-        << " at fixed lattice Mach (" << total/(nodesFactor*4)
-        << " s at fixed tau), memory " << memory/nodesFactor/1048576.0
-        << " MiB" << nl
-        << "    Nothing was written." << nl << endl;
+        << " s per step, after " << nWarmUp << " warm-up steps)" << nl
+        << "    case as set up:  wall time " << duration(total).c_str()
+        << " for " << nStepsTotal_ << " steps, memory "
+        << memory/1048576.0 << " MiB" << nl
+        << "    dx halved:       wall time "
+        << scaled(nodesFactor, 2).c_str() << ", memory "
+        << memory*nodesFactor/1048576.0 << " MiB" << nl
+        << "    dx doubled:      wall time "
+        << scaled(1/nodesFactor, 0.5).c_str() << ", memory "
+        << memory/nodesFactor/1048576.0 << " MiB" << nl
+        << "    Writing is not included. Nothing was written." << nl << endl;
 }
 
 
