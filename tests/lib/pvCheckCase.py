@@ -14,9 +14,10 @@
 #             [--cloud NAME:N | --cloud NAME:NMIN:NMAX ...] \
 #             [--cloud-field CLOUD:NAME:MIN:MAX ...] [--decomposed] \
 #             [--png FILE [--resolution WxH] [--colour-by NAME]
-#              [--slice x|y|z]]
+#              [--cloud-colour-by NAME[:COMPONENT]:MIN:MAX] [--slice x|y|z]]
 #
-#     It opens DIR/case.foam (made empty if missing), goes to the requested
+#     It opens the case's .foam file (DIR/<DIR's name>.foam, as paraFoam
+#     -touch makes it, made empty if the case has none), goes to the requested
 #     time (default: the latest one, the 0 directory included) and checks:
 #       --field NAME:MIN:MAX          cell field NAME of the internal mesh is
 #                                     there, finite, and its range lies within
@@ -28,7 +29,11 @@
 #                                     a field of a lagrangian cloud
 #     MIN and MAX may be 'inf' and '-inf'. With --png it renders the internal
 #     mesh coloured by the first --field (or --colour-by), with a colour bar,
-#     the time in a text annotation, and the clouds as points.
+#     the time in a text annotation, and the clouds as points, sized to
+#     about their spacing in the picture, dark grey or coloured by a field
+#     of the cloud (--cloud-colour-by stress:YY:-2e5:0: the vertical stress,
+#     components named as ParaView names them: X, Y, Z, XX, YY, ZZ, XY, YZ,
+#     XZ, or Magnitude).
 #
 #     Prints one 'PASS ...' or 'FAIL ...' line per check, then a summary,
 #     and exits 1 if any check failed (2 on a usage error), 0 otherwise.
@@ -98,6 +103,16 @@ def cloudFieldSpec(text):
     return (cloud, name, lo, hi)
 
 
+def cloudColourSpec(text):
+    """NAME[:COMPONENT]:MIN:MAX -> (name, component or None, (min, max))"""
+    parts = text.split(':')
+    if len(parts) not in (3, 4):
+        raise argparse.ArgumentTypeError(
+            "cloud colour '%s' is not NAME[:COMPONENT]:MIN:MAX" % text)
+    lo, hi = parseRange(parts[-2], text), parseRange(parts[-1], text)
+    return parts[0], (parts[1] if len(parts) == 4 else None), (lo, hi)
+
+
 def resolutionSpec(text):
     """WxH -> [W, H]"""
     try:
@@ -145,6 +160,11 @@ def parseArgs(argv):
     p.add_argument('--colour-by', '--color-by', dest='colourBy',
                    help='field to colour the mesh by in the PNG '
                         '(default: the first --field)')
+    p.add_argument('--cloud-colour-by', '--cloud-color-by',
+                   dest='cloudColourBy', type=cloudColourSpec, default=None,
+                   metavar='NAME[:COMPONENT]:MIN:MAX',
+                   help='field of the clouds to colour their points by in '
+                        'the PNG, with its colour range')
     args = p.parse_args(argv)
 
     if args.time != 'latest':
@@ -343,13 +363,48 @@ def render(args, reader, time, blocks, clouds, colourField):
     # The clouds, as points on top: in a 2D-like mesh particles lie inside
     # the slab, behind its front face, so they are moved out towards the
     # camera; in 3D the mesh is made see-through instead
+    # Points about as large as their spacing in the picture (drawn larger
+    # they merge into a solid blot): the spacing from the cloud's size
+    pointSize = 6.0
+    if bounds and clouds:
+        inPlane = sorted(size)[1:] if flat else size
+        nPoints = max(1, sum(ds.GetNumberOfPoints()
+                             for region in clouds
+                             for ds in asList(blocks.get('/' + region))))
+        extent = max(inPlane)
+        area = inPlane[0] * inPlane[1] if flat else None
+        spacing = (area / nPoints) ** 0.5 if flat \
+            else (size[0] * size[1] * size[2] / nPoints) ** (1.0 / 3.0)
+        pixels = 0.8 * min(width, height) / max(extent, 1e-300)
+        pointSize = min(6.0, max(1.5, 0.9 * spacing * pixels))
     for region in clouds:
         cloud = pv.ExtractBlock(Input=reader, Selectors=['/Root/' + region])
         cloudDisplay = pv.Show(cloud, view)
         cloudDisplay.Representation = 'Points'
-        cloudDisplay.ColorArrayName = ['POINTS', '']
-        cloudDisplay.AmbientColor = cloudDisplay.DiffuseColor = black
-        cloudDisplay.PointSize = 6.0
+        cloudColour = getattr(args, 'cloudColourBy', None)
+        if cloudColour:
+            name, component, (lo, hi) = cloudColour
+            if component:
+                pv.ColorBy(cloudDisplay, ('POINTS', name, component))
+            else:
+                pv.ColorBy(cloudDisplay, ('POINTS', name))
+            lut = pv.GetColorTransferFunction(name)
+            lut.ApplyPreset('Viridis (matplotlib)', True)
+            lut.RescaleTransferFunction(lo, hi)
+            lut.AutomaticRescaleRangeMode = 'Never'
+            cloudDisplay.SetScalarBarVisibility(view, True)
+            bar = pv.GetScalarBar(lut, view)
+            bar.Title = name + (' ' + component if component else '')
+            bar.ComponentTitle = ''
+            bar.TitleColor = black
+            bar.LabelColor = black
+            bar.RangeLabelFormat = '%-.4g'
+            bar.WindowLocation = 'Upper Right Corner'
+        else:
+            cloudDisplay.ColorArrayName = ['POINTS', '']
+            cloudDisplay.AmbientColor = cloudDisplay.DiffuseColor = \
+                [0.15, 0.15, 0.15]
+        cloudDisplay.PointSize = pointSize
         try:
             cloudDisplay.RenderPointsAsSpheres = 1
         except AttributeError:
@@ -396,7 +451,11 @@ def main(argv):
         print('FAIL case %s: no such case (no system directory)' % caseDir)
         return 1
 
-    foamFile = os.path.join(caseDir, 'case.foam')
+    # The case's own .foam file (paraFoam -touch makes <case name>.foam): one
+    # per case, whoever opens it first
+    existing = sorted(f for f in os.listdir(caseDir) if f.endswith('.foam'))
+    foamFile = os.path.join(caseDir, existing[0] if existing
+                            else os.path.basename(caseDir) + '.foam')
     if not os.path.exists(foamFile):
         open(foamFile, 'a').close()
 
