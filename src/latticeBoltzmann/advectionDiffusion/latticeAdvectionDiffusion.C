@@ -400,6 +400,28 @@ void Foam::latticeAdvectionDiffusion::fillBoundaries
         }
 
         scalar value = gi;
+        if
+        (
+            settling_
+         && (k == CLOSED || (k == ADVECTIVE && !linkNodeVelocity_[l]))
+         && linkVelocity_[l] == 0
+        )
+        {
+            // A wall: what settles into it is deposited there
+            const scalar ws = signOf(i)*(*settling_)[x][axisOf(i)];
+            if (ws > 0)
+            {
+                scalar Phi = 0;
+                for (label q = 0; q < Q_; ++q)
+                {
+                    Phi += g[q*nBox + x];
+                }
+                value = max(gi - Phi*ws, scalar(0));
+                deposited_ += (gi - value)*Vcell;
+            }
+            g[slot] = value;
+            continue;
+        }
         if (k == FIXED)
         {
             value = -gi + cs2_*eps*linkValue_[l];
@@ -496,6 +518,8 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
     AisCurrent_(true),
     patchOutflow_(lattice.mesh().boundaryMesh().size(), Zero),
     sourced_(0),
+    settling_(nullptr),
+    deposited_(0),
     content0_(0),
     limited_(0),
     PhiMin_(0),
@@ -538,11 +562,23 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
 
 void Foam::latticeAdvectionDiffusion::step
 (
-    const UList<vector>& u,
+    const UList<vector>& uWater,
     const scalarList* porosity,
     const scalarList* source
 )
 {
+    // Settling grains move at the water's pore velocity plus their own
+    if (settling_)
+    {
+        uSettled_.setSize(uWater.size());
+        forAll(uSettled_, n)
+        {
+            const scalar eps = porosity ? (*porosity)[n] : 1;
+            uSettled_[n] = uWater[n] + eps*(*settling_)[n];
+        }
+    }
+    const UList<vector>& u = settling_ ? uSettled_ : uWater;
+
     prepare(u, porosity);
 
     const label nBox = lattice_.nBox();
@@ -627,11 +663,17 @@ Foam::scalarList Foam::latticeAdvectionDiffusion::patchOutflow() const
 }
 
 
+Foam::scalar Foam::latticeAdvectionDiffusion::deposited() const
+{
+    return returnReduce(deposited_, sumOp<scalar>());
+}
+
+
 Foam::scalar Foam::latticeAdvectionDiffusion::balanceDefect() const
 {
     const scalar now = content();
     const scalar added = sourced();
-    const scalar out = sum(patchOutflow());
+    const scalar out = sum(patchOutflow()) + deposited();
     const scalar scale =
         max(max(mag(now), mag(content0_)), max(mag(added), mag(out)));
     return scale > 0 ? (now - (content0_ + added - out))/scale : 0;

@@ -30,8 +30,13 @@ Description
     - suffusion: lambda (1 - n) c |q| rho_s above the critical gradient
       and the fines limit, 0 at or below either, the seed concentration
       where the water is clear;
-    - bad input: unknown law, negative or missing coefficients, grains
-      lighter than water: FatalIOError naming the keyword.
+    - settling models (section 3): Stokes' 8.99 mm/s at d = 0.1 mm,
+      Soulsby's against the table for d = 0.1 to 2 mm, Richardson & Zaki's
+      hindrance (1 - phi)^n with Rowe's exponent (4.7 for fine grains,
+      between 2.34 and 2.6 for 2 mm sand);
+    - bad input: unknown law or settling model, negative or missing
+      coefficients, grains lighter than water: FatalIOError naming the
+      keyword.
     Prints PASS:/FAIL: lines; exits 1 on any failure.
 
 \*---------------------------------------------------------------------------*/
@@ -42,6 +47,7 @@ Description
 #include "suffusion.H"
 #include "IStringStream.H"
 #include "unitTest.H"
+#include "settlingModel.H"
 
 #include <cmath>
 #include <string>
@@ -211,6 +217,81 @@ static void testSuffusion()
 }
 
 
+// * * * * * * * * * * * * * * * * Settling  * * * * * * * * * * * * * * * * //
+
+static autoPtr<settlingModel> makeSettling(const std::string& text)
+{
+    IStringStream is(scene + text);
+    return settlingModel::New(dictionary(is));
+}
+
+static void testSettling()
+{
+    // Stokes: (rho_s - rho_w) g d^2/(18 mu); 8.99 mm/s at d = 0.1 mm
+    // (erosion-free-surface-outputs.md section 3)
+    {
+        autoPtr<settlingModel> m = makeSettling
+        (
+            "settlingModel Stokes; StokesCoeffs { d 1e-4; hindered false; }"
+        );
+        const scalar expect = 1650*9.81*1e-8/(18*1e-3);
+        check(mag(m->terminalVelocity()/expect - 1) < 1e-14,
+            "Stokes: w_s = (rho_s - rho_w) g d^2/(18 rho_w nu)",
+            m->terminalVelocity());
+        check(mag(m->terminalVelocity() - 8.99e-3) < 5e-6,
+            "Stokes: 8.99 mm/s at d = 0.1 mm (the reference's value)",
+            m->terminalVelocity(), 5e-6);
+        check(m->velocity(0.3) == m->terminalVelocity(),
+            "Stokes, not hindered: the same at any concentration", 0);
+    }
+
+    // Soulsby (1997, p. 134) against the reference's table, s = 2.65
+    {
+        const scalar d[5] = {1e-4, 2e-4, 5e-4, 1e-3, 2e-3};
+        const scalar table[5] = {7.89e-3, 26.2e-3, 73.7e-3, 120.4e-3, 179.2e-3};
+        scalar worst = 0;
+        for (int i = 0; i < 5; ++i)
+        {
+            autoPtr<settlingModel> m = makeSettling
+            (
+                "settlingModel Soulsby; SoulsbyCoeffs { d "
+              + std::to_string(d[i]) + "; }"
+            );
+            worst = max(worst, mag(m->terminalVelocity()/table[i] - 1));
+        }
+        check(worst < 2e-3, "Soulsby: w_s at d = 0.1 to 2 mm against the"
+            " table (7.89 to 179.2 mm/s, 3 digits)", worst, 2e-3);
+    }
+
+    // Richardson-Zaki, Rowe's exponent: 4.7 for fine grains, towards 2.34
+    // for coarse ones; w = w_s (1 - phi)^n
+    {
+        autoPtr<settlingModel> fine = makeSettling
+        (
+            "settlingModel constant; constantCoeffs { ws 1e-3; }"
+        );
+        check(fine->exponent() == 4.7, "Richardson-Zaki: n = 4.7 without d"
+            " (the fine-grain limit of Rowe 1987)", fine->exponent());
+        const scalar ratio = fine->velocity(0.1)/fine->terminalVelocity();
+        check(mag(ratio - std::pow(0.9, 4.7)) < 1e-15,
+            "Richardson-Zaki: w(0.1) = w_s 0.9^4.7", ratio);
+        check(fine->velocity(1.5) == 0 && fine->velocity(-1) == 1e-3,
+            "Richardson-Zaki: phi clipped to [0, 1]", fine->velocity(1.5));
+
+        autoPtr<settlingModel> coarse = makeSettling
+        (
+            "settlingModel Soulsby; SoulsbyCoeffs { d 2e-3; }"
+        );
+        const scalar Re = coarse->terminalVelocity()*2e-3/1e-6;
+        const scalar r = std::pow(Re, 0.75);
+        check(mag(coarse->exponent() - (4.7 + 0.41*r)/(1 + 0.175*r)) < 1e-14
+         && coarse->exponent() < 2.6 && coarse->exponent() > 2.34,
+            "Richardson-Zaki: Rowe's n at Re_p 358 (2 mm sand) between 2.34"
+            " and 2.6", coarse->exponent());
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Bad input  * * * * * * * * * * * * * * * //
 
 static void expectFatal
@@ -268,6 +349,20 @@ static void testBadInput()
         [&]() { erosionLaw::New(lightDict); },
         "rhoSolid 900 is not allowed", "grains lighter than water"
     );
+
+    auto settlingFatal = [](const std::string& text, const std::string& key,
+        const std::string& what)
+    {
+        unitTest::expectFatal([&]() { makeSettling(text); }, key, what);
+    };
+    settlingFatal("settlingModel sinking;",
+        "Unknown settlingModel type sinking", "unknown settlingModel");
+    settlingFatal("settlingModel constant; constantCoeffs { ws -1e-3; }",
+        "ws -0.001 is not allowed", "settling ws < 0");
+    settlingFatal("settlingModel Stokes; StokesCoeffs { d 0; }",
+        "d 0 is not allowed", "Stokes d = 0");
+    settlingFatal("settlingModel Stokes;",
+        "'d'", "Stokes without d");
 }
 
 
@@ -278,6 +373,7 @@ int main(int argc, char *argv[])
     testExcessShearStress();
     testShields();
     testSuffusion();
+    testSettling();
     testBadInput();
 
     return unitTest::finish();

@@ -202,15 +202,36 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
             << " setMaterialPoints" << exit(FatalIOError);
     }
 
+    if (suspensionSettling::selected(dict_))
+    {
+        settling_.reset
+        (
+            new suspensionSettling
+            (
+                dict_,
+                fluid_.units().rho0(),
+                drag_.muFluid()/drag_.rhoFluid(),
+                suspension_
+            )
+        );
+    }
+
     if (dict_.getOrDefault<bool>("writeBalance", true))
     {
+        wordList columns({"eroded", "suspended", "out"});
+        if (settling_.valid())
+        {
+            columns.append("deposited");
+        }
+        columns.append("defect");
         balanceFile_ = newStepFile
         (
             scene.mesh(), "erosion", "erosion",
             "Eroded fines [kg]: eroded from the points since the start,"
             " suspended in the water, out through the patches since the"
-            " start, and the balance's defect over the eroded mass",
-            wordList({"eroded", "suspended", "out", "defect"})
+            " start, deposited at walls by settling (with a settlingModel),"
+            " and the balance's defect over the eroded mass",
+            columns
         );
     }
 
@@ -222,6 +243,10 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
             << ": finesLimit " << finesLimit_[mati] << nl;
     }
     suspension_.report(Info);
+    if (settling_.valid())
+    {
+        settling_->model().report(Info);
+    }
     Info<< endl;
 }
 
@@ -319,6 +344,10 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
             u_[n] = units.toLattice(uPhysical_[n]);
         }
         suspension_.prepare(u_, porosity());
+        if (settling_.valid())
+        {
+            settling_->update(suspension_, porosity());
+        }
         erodePoints();
         suspension_.step(u_, porosity(), &source_);
     }
@@ -340,14 +369,21 @@ void Foam::physicsEffects::erosion::writeBalance()
     const scalar e = eroded();
     const scalar suspended = suspension_.content();
     const scalar out = sum(suspension_.patchOutflow());
+    const scalar deposited = suspension_.deposited();
     const scalar defect =
-        e > 0 ? (suspended + out - suspension_.content0() - e)/e : 0;
+        e > 0
+      ? (suspended + out + deposited - suspension_.content0() - e)/e
+      : 0;
     if (balanceFile_->writeToFile())
     {
         OFstream& os = balanceFile_->file();
         balanceFile_->writeCurrentTime(os);
-        os  << tab << e << tab << suspended << tab << out << tab << defect
-            << endl;
+        os  << tab << e << tab << suspended << tab << out;
+        if (settling_.valid())
+        {
+            os  << tab << deposited;
+        }
+        os  << tab << defect << endl;
     }
 }
 
@@ -381,7 +417,8 @@ Foam::scalar Foam::physicsEffects::erosion::memoryBytes() const
         suspension_.memoryBytes()
       + returnReduce
         (
-            scalar(uPhysical_.byteSize() + u_.byteSize() + source_.byteSize()),
+            scalar(uPhysical_.byteSize() + u_.byteSize() + source_.byteSize())
+          + (settling_.valid() ? settling_->memoryBytes() : 0),
             sumOp<scalar>()
         );
 }

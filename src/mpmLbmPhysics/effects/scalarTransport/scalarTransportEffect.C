@@ -62,6 +62,22 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
     ),
     u_(fluid_.lattice().nBox(), Zero)
 {
+    if (suspensionSettling::selected(dict_))
+    {
+        // (the water's own viscosity unless nuFluid says otherwise: the
+        // lattice's may be raised for stability)
+        settling_.reset
+        (
+            new suspensionSettling
+            (
+                dict_,
+                fluid_.units().rho0(),
+                dict_.getOrDefault<scalar>("nuFluid", fluid_.units().nu()),
+                transport_
+            )
+        );
+    }
+
     if (dict_.getOrDefault<bool>("writeBalance", false))
     {
         wordList columns({"content", "sourced"});
@@ -69,18 +85,27 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
         {
             columns.append("out_" + pp.name());
         }
+        if (settling_.valid())
+        {
+            columns.append("deposited");
+        }
         columns.append("defect");
         balanceFile_ = newStepFile
         (
             scene.mesh(), "scalarTransport", "balance",
             "Balance of " + transport_.field().name()
           + " [its units x m3]: content, added by sources, out through"
-            " each patch (negative: in), relative defect",
+            " each patch (negative: in), deposited at walls by settling"
+            " (with a settlingModel), relative defect",
             columns
         );
     }
 
     transport_.report(Info);
+    if (settling_.valid())
+    {
+        settling_->model().report(Info);
+    }
     Info<< endl;
 }
 
@@ -110,6 +135,11 @@ void Foam::physicsEffects::scalarTransport::evolve(const sceneStage stage)
         {
             v = units.toLattice(v);
         }
+        if (settling_.valid())
+        {
+            transport_.prepare(u_, porosity());
+            settling_->update(transport_, porosity());
+        }
         transport_.step(u_, porosity());
     }
     else if (stage == sceneStage::endStep)
@@ -125,6 +155,8 @@ void Foam::physicsEffects::scalarTransport::writeBalance()
     const scalar sourced = transport_.sourced();
     const scalarList out = transport_.patchOutflow();
     const scalar defect = transport_.balanceDefect();
+    // (collective: every processor, before the master writes)
+    const scalar deposited = settling_.valid() ? transport_.deposited() : 0;
     if (balanceFile_->writeToFile())
     {
         OFstream& os = balanceFile_->file();
@@ -133,6 +165,10 @@ void Foam::physicsEffects::scalarTransport::writeBalance()
         for (const scalar o : out)
         {
             os  << tab << o;
+        }
+        if (settling_.valid())
+        {
+            os  << tab << deposited;
         }
         os  << tab << defect << endl;
     }
@@ -177,7 +213,12 @@ Foam::scalar Foam::physicsEffects::scalarTransport::memoryBytes() const
 {
     return
         transport_.memoryBytes()
-      + returnReduce(scalar(u_.byteSize()), sumOp<scalar>());
+      + returnReduce
+        (
+            scalar(u_.byteSize())
+          + (settling_.valid() ? settling_->memoryBytes() : 0),
+            sumOp<scalar>()
+        );
 }
 
 
