@@ -14,6 +14,8 @@ License
 #include "caseChecks.H"
 #include "IFstream.H"
 #include "selectEntry.H"
+#include "restartManifest.H"
+#include "Time.H"
 #include <fenv.h>
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
@@ -75,6 +77,40 @@ void Foam::checkControlDict(const argList& args)
                 "the run starts at startTime " + Foam::name(startTime)
               + ": it must not end before it"
             );
+        }
+        if (startFrom == "latestTime")
+        {
+            // The latest complete time (one a stopped run left incomplete
+            // is set aside before the run starts)
+            scalar latest = -GREAT;
+            word latestName;
+            for (const instant& t : Time::findTimes(args.path()))
+            {
+                if
+                (
+                    !isFile
+                    (
+                        args.path()/t.name()/restartManifest::incompleteMarker
+                    )
+                 && t.value() > latest
+                )
+                {
+                    latest = t.value();
+                    latestName = t.name();
+                }
+            }
+            // (a step's worth of round-off: endTime equal to the latest
+            // time is a finished run, which does nothing)
+            const scalar deltaT = dict.getOrDefault<scalar>("deltaT", 0);
+            if (latestName.size() && endTime < latest - 1e-6*mag(deltaT))
+            {
+                entryNotAllowed
+                (
+                    dict, "endTime", endTime,
+                    "the run starts from the latest time " + latestName
+                  + " (startFrom latestTime): it must not end before it"
+                );
+            }
         }
     }
 }
