@@ -57,16 +57,45 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
 
-    // The input is read with overflow untrapped (caseChecks.H)
-    const bool overflowTrapped = suspendOverflowTrap();
-    checkControlDict(args);
-    restartManifest::checkWritable(args);
-    restartManifest::setAsideIncompleteTimes(args);
-    #include "createTime.H"
-    #include "createMesh.H"
+    // The input is read with overflow untrapped and OpenFOAM's fatal
+    // errors ending the run cleanly (caseChecks.H)
+    const bool inputTrapped = suspendInputTraps();
+    autoPtr<Time> runTimePtr;
+    autoPtr<fvMesh> meshPtr;
+    autoPtr<physicsScene> scenePtr;
+    runSetup
+    (
+        [&]()
+        {
+            checkControlDict(args);
+            restartManifest::checkWritable(args);
+            restartManifest::setAsideIncompleteTimes(args);
 
-    physicsScene scene(runTime, mesh);
-    restoreOverflowTrap(overflowTrapped);
+            Info<< "Create time\n" << endl;
+            runTimePtr.reset(new Time(Time::controlDictName, args));
+
+            Info<< "Create mesh for time = " << runTimePtr->timeName()
+                << nl << endl;
+            meshPtr.reset
+            (
+                new fvMesh
+                (
+                    IOobject
+                    (
+                        fvMesh::defaultRegion,
+                        runTimePtr->timeName(),
+                        *runTimePtr,
+                        IOobject::MUST_READ
+                    )
+                )
+            );
+
+            scenePtr.reset(new physicsScene(*runTimePtr, *meshPtr));
+        }
+    );
+    restoreInputTraps(inputTrapped);
+    Time& runTime = *runTimePtr;
+    physicsScene& scene = *scenePtr;
 
     if (args.found("estimate"))
     {

@@ -366,92 +366,102 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     // A number such as 1e400 in the input: the parser's error, not a trap
-    // (caseChecks.H); the cloud's values are checked where it is read
-    suspendOverflowTrap();
-    checkControlDict(args);
-    #include "createTime.H"
-    #include "createMesh.H"
-
-    const clockValue start(clockValue::now());
-
-    IOdictionary dict
+    // (caseChecks.H); the cloud's values are checked where it is read;
+    // and OpenFOAM's fatal errors end it cleanly (caseChecks.H)
+    suspendInputTraps();
+    runSetup
     (
-        IOobject
-        (
-            "setMaterialPointsDict",
-            runTime.system(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    );
-    IOdictionary soilDict
-    (
-        IOobject
-        (
-            "soilProperties",
-            runTime.constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
-    );
+        [&]()
+        {
+            checkControlDict(args);
+            #include "createTime.H"
+            #include "createMesh.H"
 
-    const latticeMesh lattice(mesh, 1);
-    lattice.report(Info);
+            const clockValue start(clockValue::now());
 
-    const label n = readPointsPerCell(dict);
-    const dictionary& materialsDict = soilDict.subDict("materials");
-    const vector gravity = readGravity(soilDict, mesh, lattice.twoD());
-    const PtrList<materialPointRegion> regions
-    (
-        materialPointRegion::readList(dict, runTime, materialsDict, gravity)
-    );
-    for (const materialPointRegion& reg : regions)
-    {
-        checkInPlane(lattice.twoD(), reg.velocity(), "velocity", reg.dict());
-    }
+            IOdictionary dict
+            (
+                IOobject
+                (
+                    "setMaterialPointsDict",
+                    runTime.system(),
+                    mesh,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE
+                )
+            );
+            IOdictionary soilDict
+            (
+                IOobject
+                (
+                    "soilProperties",
+                    runTime.constant(),
+                    mesh,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE
+                )
+            );
 
-    pointField candidates;
-    labelList candidateId;
-    const bool globalIds =
-        seedCandidates(lattice, mesh, n, candidates, candidateId);
+            const latticeMesh lattice(mesh, 1);
+            lattice.report(Info);
 
-    labelList regionCount;
-    const labelList region
-    (
-        assignRegions(regions, candidates, mesh, lattice.dx()/n, regionCount)
-    );
+            const label n = readPointsPerCell(dict);
+            const dictionary& materialsDict = soilDict.subDict("materials");
+            const vector gravity = readGravity(soilDict, mesh, lattice.twoD());
+            const PtrList<materialPointRegion> regions
+            (
+                materialPointRegion::readList(dict, runTime, materialsDict, gravity)
+            );
+            for (const materialPointRegion& reg : regions)
+            {
+                checkInPlane(lattice.twoD(), reg.velocity(), "velocity", reg.dict());
+            }
 
-    materialPoints points;
-    fillPoints
-    (
-        regions, candidates, candidateId, region, globalIds, lattice, n,
-        gravity, points
-    );
-    // The cloud and, after it, the counts and totals a run starting here
-    // must find in it (a processor's cloud lost by decomposePar or by hand)
-    restartManifest::beginWrite(runTime, false);
-    points.write(mesh, lattice);
-    restartManifest::stateTable state;
-    state.set("soilPoints", points.size());
-    state.set("soilMass", sum(points.m));
-    restartManifest::endWrite
-    (
-        runTime,
-        "setMaterialPoints",
-        state,
-        points.size()
-      ? wordList(1, "lagrangian"/materialPoints::cloudName)
-      : wordList(),
-        false
-    );
+            pointField candidates;
+            labelList candidateId;
+            const bool globalIds =
+                seedCandidates(lattice, mesh, n, candidates, candidateId);
 
-    const scalar seconds = start.elapsed();
-    report
-    (
-        regions, regionCount, materialsDict.toc(), points, n,
-        runTime.timeName(), seconds
+            labelList regionCount;
+            const labelList region
+            (
+                assignRegions(regions, candidates, mesh, lattice.dx()/n, regionCount)
+            );
+
+            materialPoints points;
+            fillPoints
+            (
+                regions, candidates, candidateId, region, globalIds, lattice, n,
+                gravity, points
+            );
+            // The cloud and, after it, the counts and totals a run starting
+            // here must find in it (a processor's cloud lost by decomposePar or
+            // by hand) and its files' checksums (an edit is reported)
+            restartManifest::beginWrite(runTime, false);
+            points.write(mesh, lattice);
+            restartManifest::stateTable state;
+            state.set("soilPoints", points.size());
+            state.set("soilMass", sum(points.m));
+            restartManifest::endWrite
+            (
+                runTime,
+                "setMaterialPoints",
+                state,
+                wordList(),
+                wordList
+                ({
+                    "lagrangian"/materialPoints::cloudName,
+                    "uniform"/fileName("lagrangian")/materialPoints::cloudName
+                })
+            );
+
+            const scalar seconds = start.elapsed();
+            report
+            (
+                regions, regionCount, materialsDict.toc(), points, n,
+                runTime.timeName(), seconds
+            );
+        }
     );
 
     return 0;

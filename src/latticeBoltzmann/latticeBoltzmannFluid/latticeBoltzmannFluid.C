@@ -377,12 +377,14 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
             << " in (0, 1]; the lattice Boltzmann method is accurate for"
             << " Mach numbers well below 0.3" << exit(FatalIOError);
     }
-    if (smagorinsky_ < 0)
+    // (Smagorinsky's constant is of order 0.1: beyond 1 the eddy
+    // viscosity would swamp the flow it models; written so NaN fails)
+    if (!(smagorinsky_ >= 0 && smagorinsky_ <= 1))
     {
         FatalIOErrorInFunction(dict_)
             << "smagorinskyConstant " << smagorinsky_ << " is not allowed:"
-            << " it must be >= 0 (0: no sub-grid model; 0.1 to 0.17 usual)"
-            << exit(FatalIOError);
+            << " it must lie in [0, 1] (0: no sub-grid model; 0.1 to 0.17"
+            << " usual)" << exit(FatalIOError);
     }
 
     // Damaged initial fields stop here (binary NaN or Inf, 1e400)

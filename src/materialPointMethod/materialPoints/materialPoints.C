@@ -423,6 +423,55 @@ void Foam::materialPoints::readFields
     checkFinite(porosity, dir/"porosity", "values");
     checkFinite(F, dir/"F", "values");
     checkFinite(C, dir/"C", "values");
+
+    // Values no soil can have (a damaged or hand-made cloud): stopped here,
+    // not by a floating-point trap or a silent answer steps later
+    const boundBox bb(cloud.pMesh().bounds());
+    const scalar tol = 1e-6*mag(bb.span());
+    checkValues
+    (
+        x, dir/"x", "values",
+        [&](const vector& p)
+        {
+            return
+                p.x() >= bb.min().x() - tol && p.x() <= bb.max().x() + tol
+             && p.y() >= bb.min().y() - tol && p.y() <= bb.max().y() + tol
+             && p.z() >= bb.min().z() - tol && p.z() <= bb.max().z() + tol;
+        },
+        "inside the mesh, " + Foam::name(bb.min()) + " to "
+      + Foam::name(bb.max())
+    );
+    auto positive = [](const scalar s) { return s > 0; };
+    checkValues(m, dir/"mass", "values", positive, "positive: a mass");
+    checkValues(V, dir/"volume", "values", positive, "positive: a volume");
+    checkValues
+    (
+        V0, dir/"initialVolume", "values", positive, "positive: a volume"
+    );
+    checkValues
+    (
+        halfLength, dir/"halfLength", "values",
+        [](const vector& h) { return h.x() > 0 && h.y() > 0 && h.z() > 0; },
+        "positive in every direction: a point's half size"
+    );
+    checkValues
+    (
+        porosity, dir/"porosity", "values",
+        [](const scalar n) { return n >= 0 && n < 1; },
+        "in [0, 1): a porosity"
+    );
+    checkValues
+    (
+        F, dir/"F", "values",
+        [](const tensor& f) { return det(f) > 0; },
+        "of positive determinant: a deformation gradient"
+    );
+    checkValues
+    (
+        plasticStrain, dir/"plasticStrain", "values",
+        [](const scalar e) { return e >= 0; },
+        "non-negative: an accumulated plastic strain"
+    );
 }
 
 

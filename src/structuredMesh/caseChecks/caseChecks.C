@@ -69,6 +69,18 @@ void Foam::checkControlDict(const argList& args)
                 dict, "endTime", endTime, "it must be >= 0 and finite"
             );
         }
+        // As many steps as a run can count (a label), not 1e300 s
+        const scalar deltaT = dict.getOrDefault<scalar>("deltaT", 0);
+        if (deltaT > 0 && (endTime - min(startTime, endTime))/deltaT > 1e9)
+        {
+            entryNotAllowed
+            (
+                dict, "endTime", endTime,
+                "it would take " + Foam::name((endTime - startTime)/deltaT)
+              + " steps of deltaT " + Foam::name(deltaT) + ": a run counts"
+                " at most 1e9"
+            );
+        }
         if (startFrom == "startTime" && endTime < startTime)
         {
             entryNotAllowed
@@ -101,7 +113,6 @@ void Foam::checkControlDict(const argList& args)
             }
             // (a step's worth of round-off: endTime equal to the latest
             // time is a finished run, which does nothing)
-            const scalar deltaT = dict.getOrDefault<scalar>("deltaT", 0);
             if (latestName.size() && endTime < latest - 1e-6*mag(deltaT))
             {
                 entryNotAllowed
@@ -134,24 +145,58 @@ void Foam::checkInPlane
 }
 
 
-bool Foam::suspendOverflowTrap()
+bool Foam::suspendInputTraps()
 {
-    const bool trapped = fegetexcept() & FE_OVERFLOW;
+    const bool trapped = fegetexcept() & (FE_OVERFLOW | FE_INVALID);
     if (trapped)
     {
-        fedisableexcept(FE_OVERFLOW);
+        fedisableexcept(FE_OVERFLOW | FE_INVALID);
     }
     return trapped;
 }
 
 
-void Foam::restoreOverflowTrap(const bool wasTrapped)
+void Foam::restoreInputTraps(const bool wasTrapped)
 {
     if (wasTrapped)
     {
         // (a flag raised while reading must not fire at once)
-        feclearexcept(FE_OVERFLOW);
-        feenableexcept(FE_OVERFLOW);
+        feclearexcept(FE_OVERFLOW | FE_INVALID);
+        feenableexcept(FE_OVERFLOW | FE_INVALID);
+    }
+}
+
+
+void Foam::runSetup(const std::function<void()>& setup)
+{
+    const bool throwing = FatalError.throwExceptions();
+    const bool ioThrowing = FatalIOError.throwExceptions();
+    int failed = 0;
+    try
+    {
+        setup();
+    }
+    catch (const Foam::IOerror& err)
+    {
+        Perr<< nl << err << nl;
+        failed = 1;
+    }
+    catch (const Foam::error& err)
+    {
+        Perr<< nl << err << nl;
+        failed = 1;
+    }
+    FatalError.throwExceptions(throwing);
+    FatalIOError.throwExceptions(ioThrowing);
+    if (failed)
+    {
+        if (Pstream::parRun())
+        {
+            Perr<< "\nFOAM parallel run exiting\n" << endl;
+            Pstream::exit(1);
+        }
+        Perr<< "\nFOAM exiting\n" << endl;
+        std::exit(1);
     }
 }
 

@@ -64,6 +64,10 @@ void Foam::writeNodeField
     {
         values[celli] = nodeValues[cellNode[celli]];
     }
+    // A uniform field is written "uniform <value>" as text even in binary
+    // format, at the stream's precision: 17 digits, so that it reads back
+    // exactly (water at rest on a processor: populations uniform)
+    const unsigned int precision = IOstream::defaultPrecision(17);
     fld.writeObject
     (
         IOstream::BINARY,
@@ -71,6 +75,7 @@ void Foam::writeNodeField
         mesh.time().writeCompression(),
         true
     );
+    IOstream::defaultPrecision(precision);
 }
 
 

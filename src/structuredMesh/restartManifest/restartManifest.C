@@ -365,17 +365,14 @@ void Foam::restartManifest::endWrite
     const word& writer,
     const stateTable& localState,
     const wordList& exactFiles,
-    const bool recordFiles
+    const wordList& recordOnly
 )
 {
     const fileName dir = runTime.timePath();
 
     DynamicList<fileName> all;
-    if (recordFiles)
-    {
-        listFiles(dir, fileName::null, all);
-        Foam::sort(all);
-    }
+    listFiles(dir, fileName::null, all);
+    Foam::sort(all);
 
     DynamicList<string> names;
     DynamicList<scalar> sizes;
@@ -385,6 +382,10 @@ void Foam::restartManifest::endWrite
     for (const fileName& name : all)
     {
         const bool isState = isExact(name, exactFiles);
+        if (recordOnly.size() && !isExact(name, recordOnly))
+        {
+            continue;
+        }
         uint64_t sum = 0;
         scalar size = 0;
         bool complete = false;
@@ -470,8 +471,26 @@ void Foam::restartManifest::checkFiles(const Time& runTime)
 {
     const fileName dir = runTime.timePath();
     const fileName path = dir/"uniform"/manifestName;
-    if (!isFile(path))
+    const bool here = isFile(path);
+    if (!returnReduce(here, orOp<bool>()))
     {
+        // A written state without its manifest: said, not silently used
+        const bool state = isFile(dir/"lbmF0") || isDir(dir/"lagrangian");
+        if (returnReduce(state, orOp<bool>()))
+        {
+            WarningInFunction
+                << "Time " << runTime.timeName() << " in " << dir << " has no"
+                << " uniform/" << manifestName << ": the state read from it"
+                << " (populations, the cloud) is not checked against what"
+                << " was written (a time written by an older version, or"
+                << " whose manifest was removed)." << nl << endl;
+        }
+        return;
+    }
+    if (!here)
+    {
+        // (decomposePar may leave a processor without the link to the
+        // case's uniform/: the state is compared over all processors)
         return;
     }
     const dictionary manifest(readManifest(path));
@@ -554,12 +573,13 @@ void Foam::restartManifest::checkFiles(const Time& runTime)
         }
         WarningInFunction
             << "Files of time " << runTime.timeName() << " in " << dir
-            << " changed since they were written:" << nl
-            << list.str().c_str()
-            << "    The restart takes the state from the files that hold it"
-            << " exactly (populations, the cloud): of a field edited here"
-            << " only what is not state is used (e.g. its boundary"
-            << " conditions)." << nl << endl;
+            << " changed since " << manifest.get<word>("writer")
+            << " wrote them:" << nl << list.str().c_str()
+            << "    They are read as they are now. (In a time the solver"
+            << " wrote, the state comes from the files that hold it exactly,"
+            << " the populations and the cloud: of an edited field only"
+            << " what is not state counts, e.g. its boundary conditions.)"
+            << nl << endl;
     }
 }
 

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "buoyancyEffect.H"
+#include "caseChecks.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
 #include "soilEffect.H"
@@ -136,6 +137,7 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     if (io.typeHeaderOk<volVectorField>(true))
     {
         const volVectorField Fw(io, scene.mesh());
+        checkFinite(Fw.primitiveField(), Fw.objectPath(), "internalField");
         forAll(lattice.cellNode(), celli)
         {
             applied_[lattice.cellNode()[celli]] = Fw[celli];
@@ -291,6 +293,12 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
 }
 
 
+Foam::wordList Foam::physicsEffects::buoyancy::stateFiles() const
+{
+    return wordList(1, "lbmStaticForce");
+}
+
+
 void Foam::physicsEffects::buoyancy::write()
 {
     // Lattice units, binary whatever the case's writeFormat (as the
@@ -315,6 +323,8 @@ void Foam::physicsEffects::buoyancy::write()
     {
         Fw[celli] = applied_[cellNode[celli]];
     }
+    // (17 digits: a uniform field is written as text even in binary)
+    const unsigned int precision = IOstream::defaultPrecision(17);
     Fw.writeObject
     (
         IOstream::BINARY,
@@ -322,6 +332,7 @@ void Foam::physicsEffects::buoyancy::write()
         mesh.time().writeCompression(),
         true
     );
+    IOstream::defaultPrecision(precision);
 }
 
 
