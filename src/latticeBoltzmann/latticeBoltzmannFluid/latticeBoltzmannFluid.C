@@ -354,7 +354,9 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     displacedMass_(0),
     displacement_(false),
     mass0_(0),
-    nSteps_(0)
+    nSteps_(0),
+    givenDrag_(false),
+    prepared_(false)
 {
     checkVelocitySet();
 
@@ -563,6 +565,16 @@ void Foam::latticeBoltzmannFluid::enableForceField()
 }
 
 
+void Foam::latticeBoltzmannFluid::enableGivenDrag()
+{
+    enableForceField();
+    givenDrag_ = true;
+    dragX_ = 0;
+    dragY_ = 0;
+    dragZ_ = 0;
+}
+
+
 void Foam::latticeBoltzmannFluid::enablePorosity()
 {
     enableForceField();
@@ -736,21 +748,67 @@ Foam::vector Foam::latticeBoltzmannFluid::nodeForce
 }
 
 
-void Foam::latticeBoltzmannFluid::step()
+void Foam::latticeBoltzmannFluid::prepareStream()
 {
-    const label nBox = lattice_.nBox();
-
+    if (prepared_)
+    {
+        return;
+    }
     scalarList& f = current();
     if (nSteps_ == 0 && !restarted_)
     {
         startAtForceBalance();
     }
-    halo_.exchangeSelected(f.data(), nBox);
+    halo_.exchangeSelected(f.data(), lattice_.nBox());
     boundaries_->fill
     (
         f.data(),
         porosity_.size() ? porosity_.cdata() : nullptr
     );
+    prepared_ = true;
+}
+
+
+void Foam::latticeBoltzmannFluid::streamedState
+(
+    const label n,
+    scalar& rho,
+    vector& j,
+    vector& p,
+    vector& Fo
+) const
+{
+    // As the kernel forms them (lbmKernel.H)
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& f = current();
+    rho = 0;
+    j = Zero;
+    p = Zero;
+    for (label q = 0; q < Q; ++q)
+    {
+        const vector cq(c[q]);
+        const scalar fq = f[q*nBox + n - offset_[q]];
+        rho += fq;
+        j += fq*cq;
+        p += f[q*nBox + n]*cq;
+    }
+    const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
+    Fo = eps*rho*units_.accelerationToLattice(bodyAcceleration_);
+    if (Fx_.size())
+    {
+        Fo += vector(Fx_[n], Fy_[n], Fz_[n]);
+    }
+}
+
+
+void Foam::latticeBoltzmannFluid::step()
+{
+    const label nBox = lattice_.nBox();
+
+    prepareStream();
+    scalarList& f = current();
 
     lbmKernelArgs a;
     a.fOld = f.cdata();
@@ -780,6 +838,7 @@ void Foam::latticeBoltzmannFluid::step()
         }
         a.relaxUy = relaxUy_.cdata();
         a.relaxUz = relaxUz_.cdata();
+        a.givenDrag = givenDrag_;
     }
     a.omega = 1.0/units_.tau();
     a.smagorinsky = smagorinsky_;
@@ -787,6 +846,7 @@ void Foam::latticeBoltzmannFluid::step()
     stats_ = lbmKernelStats();
     collision_->streamCollide(a, stats_);
     ++nSteps_;
+    prepared_ = false;
 
     const scalar maxU2 = sqr(machLimit_)*lattice::cs2;
     if

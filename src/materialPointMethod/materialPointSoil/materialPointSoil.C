@@ -344,6 +344,10 @@ void Foam::materialPointSoil::subStep(const scalar dt)
             }
         }
     }
+    if (gridExchange_)
+    {
+        gridExchange_->exchange(dt, gridMass_, gridVelocityOld_, gridForce_);
+    }
     forAll(gridVelocity_, n)
     {
         gridVelocity_[n] =
@@ -439,6 +443,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
         lattice.periodic()[0] || lattice.periodic()[1] || lattice.periodic()[2]
     ),
     hasPointForces_(false),
+    gridExchange_(nullptr),
     nClamped_(0),
     firstClamped_(-1),
     firstClampedAt_(Zero),
@@ -641,10 +646,18 @@ void Foam::materialPointSoil::advance(const scalar deltaT)
     const scalar dtStable = stableDt();
     nSubSteps_ = max(label(std::ceil(deltaT/dtStable - 1e-9)), label(1));
     subDt_ = deltaT/nSubSteps_;
+    if (gridExchange_)
+    {
+        gridExchange_->begin(deltaT);
+    }
     for (label s = 0; s < nSubSteps_; ++s)
     {
         time_ += subDt_;
         subStep(subDt_);
+    }
+    if (gridExchange_)
+    {
+        gridExchange_->end();
     }
     nTotalSubSteps_ += nSubSteps_;
     pointUpdates_ += scalar(nSubSteps_)*nPoints();
@@ -833,6 +846,18 @@ void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
 void Foam::materialPointSoil::clearPointForces()
 {
     pointForce_ = Zero;
+}
+
+
+void Foam::materialPointSoil::setGridExchange(soilGridExchange& exchange)
+{
+    if (gridExchange_ && gridExchange_ != &exchange)
+    {
+        FatalErrorInFunction
+            << "The soil exchanges momentum with one coupling in its"
+            << " sub-steps; a second one asked to" << abort(FatalError);
+    }
+    gridExchange_ = &exchange;
 }
 
 

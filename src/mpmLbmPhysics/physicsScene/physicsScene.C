@@ -276,11 +276,11 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::physicsScene::needsSoilAfterWater() const
+bool Foam::physicsScene::needsSoilWithWater() const
 {
     forAll(effects_, i)
     {
-        if (effects_[i].needsSoilAfterWater())
+        if (effects_[i].needsSoilWithWater())
         {
             return true;
         }

@@ -99,13 +99,17 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(scene.effect<physicsEffects::soil>("soil")),
     model_(dragModel::New(dragDict(dict_, fluid_))),
+    deltaT_(0),
     maxForce_(0)
 {
     fluid_.enableForceField();
 
     if (twoWay())
     {
-        nodeForce_.setSize(fluid_.lattice().nBox(), Zero);
+        // The water collides with the impulse the soil exchanged with it
+        // in its sub-steps
+        fluid_.enableGivenDrag();
+        soil_.mpm().setGridExchange(*this);
         if (dict_.getOrDefault<bool>("writeMomentum", false))
         {
             wordList columns;
@@ -128,8 +132,9 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
     Info<< "Drag between soil and water: " << couplingTypeNames[coupling_];
     if (twoWay())
     {
-        Info<< " (the soil advances after the water and receives its"
-            << " reaction)";
+        Info<< " (exchanged exactly in each of the soil's sub-steps, with"
+            << " the water streamed into its nodes; the water collides with"
+            << " the opposite impulse)";
     }
     Info<< nl;
     model_->report(Info);
@@ -142,10 +147,6 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
 Foam::sceneStageList Foam::physicsEffects::drag::stages() const
 {
     sceneStageList joined({sceneStage::exchange});
-    if (twoWay())
-    {
-        joined.append(sceneStage::lateExchange);
-    }
     if (momentumFile_.valid())
     {
         joined.append(sceneStage::endStep);
@@ -158,8 +159,7 @@ void Foam::physicsEffects::drag::evolve(const sceneStage stage)
 {
     switch (stage)
     {
-        case sceneStage::exchange: exchange(); break;
-        case sceneStage::lateExchange: lateExchange(); break;
+        case sceneStage::exchange: mapExchange(); break;
         case sceneStage::endStep: writeMomentum(); break;
         default: break;
     }
@@ -184,25 +184,29 @@ void Foam::physicsEffects::drag::writeMomentum()
 }
 
 
-void Foam::physicsEffects::drag::exchange()
+void Foam::physicsEffects::drag::mapExchange()
 {
     const scalarList& phi = soil_.solidFraction();
     const List<vector>& soilVelocity = soil_.nodeVelocity();
-    const scalarList& soilMass = soil_.nodeMass();
     fluid_.nodalVelocity(fluidVelocity_, true);
 
     const lbmUnits& units = fluid_.units();
     const scalar dt = units.dt();
     const scalar rhoF = units.rho0();
-    const scalar Vnode = fluid_.lattice().cellVolume();
     const bool porous = fluid_.porous();
 
+    nodes_.clear();
+    beta_.clear();
+    eps_.clear();
     maxForce_ = 0;
     for (const label n : fluid_.lattice().cellNode())
     {
         if (phi[n] <= 0)
         {
-            fluid_.clearRelaxation(n);
+            if (!twoWay())
+            {
+                fluid_.clearRelaxation(n);
+            }
             continue;
         }
 
@@ -214,12 +218,19 @@ void Foam::physicsEffects::drag::exchange()
             porous ? fluidVelocity_[n]/eps : fluidVelocity_[n];
         const vector slip = soilVelocity[n] - vF;
         const scalar beta = model_->beta(phi[n], mag(slip));
-        const scalar a = beta*dt/mF;
+        maxForce_ = max(maxForce_, beta*mag(slip));
 
-        const dragRelaxation relax =
-            twoWay()
-          ? dragRelaxation::twoWay(a, soilMass[n]/Vnode, mF)
-          : dragRelaxation::oneWay(a);
+        if (twoWay())
+        {
+            // Exchanged in the soil's sub-steps (begin, exchange, end)
+            nodes_.append(n);
+            beta_.append(beta);
+            eps_.append(porous ? eps : 1);
+            continue;
+        }
+
+        const scalar a = beta*dt/mF;
+        const dragRelaxation relax = dragRelaxation::oneWay(a);
 
         // (porous: towards the superficial velocity eps v_s)
         fluid_.setRelaxation
@@ -229,37 +240,117 @@ void Foam::physicsEffects::drag::exchange()
             relax.s(),
             units.toLattice(porous ? eps*soilVelocity[n] : soilVelocity[n])
         );
-        maxForce_ = max(maxForce_, beta*mag(slip));
     }
 }
 
 
-void Foam::physicsEffects::drag::lateExchange()
+void Foam::physicsEffects::drag::begin(const scalar deltaT)
 {
-    // The impulse density the lattice gave the water at each node this
-    // step, reversed, as a force on the node over the step [N]
-    const scalarList& phi = soil_.solidFraction();
+    // The water streamed into each node with soil (the fluid's
+    // streamPrepare has completed its populations): as the lattice's
+    // relaxation takes it (lbmKernel.H), its momentum q0 = (p + j)/2 and
+    // the impulse of its step other than the drag G = (j - p) + F_o, in
+    // lattice units; here in SI per node. The lattice's momentum density
+    // rho u (u superficial with porousFlow) is the water's mass per volume
+    // eps rho0 rho times its velocity in the pores u/eps, and the drag of
+    // the relaxation, beta/(eps rho0) (rho eps v_s - rho u), is
+    // beta rho (v_s - u/eps): the coefficient beta rho, as one-way, so
+    // that a steady state is the same
     const lbmUnits& units = fluid_.units();
-    const scalar toForce =
-        fluid_.lattice().cellVolume()/units.forceDensityToLattice();
-    nodeForce_ = Zero;
+    const scalar V = fluid_.lattice().cellVolume();
+    // An impulse density of the lattice [lattice units per step] as a
+    // force on the node over the step [N]
+    const scalar toForce = V/units.forceDensityToLattice();
+    const label nNodes = nodes_.size();
+
+    deltaT_ = deltaT;
+    C_.setSize(nNodes);
+    waterMass_.setSize(nNodes);
+    waterVelocity_.setSize(nNodes);
+    waterForce_.setSize(nNodes);
+    impulse_.setSize(nNodes);
+    forAll(nodes_, k)
+    {
+        scalar rho;
+        vector j, p, Fo;
+        fluid_.streamedState(nodes_[k], rho, j, p, Fo);
+        const scalar eps = eps_[k];
+        C_[k] = beta_[k]*rho*V;
+        waterMass_[k] = eps*units.rho0()*rho*V;
+        waterVelocity_[k] = units.toPhysical(0.5*(p + j)/rho)/eps;
+        waterForce_[k] = toForce*((j - p) + Fo);
+        impulse_[k] = Zero;
+    }
+}
+
+
+void Foam::physicsEffects::drag::exchange
+(
+    const scalar dt,
+    const scalarList& mass,
+    const List<vector>& velocity,
+    List<vector>& force
+)
+{
+    // Each node's soil and water exchange the drag over the sub-step as
+    // two bodies, each with its other forces held over it
+    // (dragRelaxation::twoBodyImpulse); the soil takes the opposite
+    // impulse as a force over the sub-step
+    forAll(nodes_, k)
+    {
+        const label n = nodes_[k];
+        const scalar mF = waterMass_[k];
+        const scalar mS = mass[n];
+        vector J(Zero);
+        if (mS > VSMALL)
+        {
+            J = dragRelaxation::twoBodyImpulse
+            (
+                C_[k],
+                mS,
+                mF,
+                waterVelocity_[k] - velocity[n],
+                waterForce_[k]/mF - force[n]/mS,
+                dt
+            );
+            force[n] -= J/dt;
+            impulse_[k] += J;
+        }
+        waterVelocity_[k] += (dt*waterForce_[k] + J)/mF;
+    }
+}
+
+
+void Foam::physicsEffects::drag::end()
+{
+    // The impulse each node's water received, as the lattice's impulse
+    // density of the step: it collides with it (given drag), exactly the
+    // opposite of what the soil received
+    const lbmUnits& units = fluid_.units();
+    const scalar toImpulse =
+        deltaT_*fluid_.lattice().cellVolume()/units.forceDensityToLattice();
     for (const label n : fluid_.lattice().cellNode())
     {
-        if (phi[n] > 0)
-        {
-            nodeForce_[n] = -toForce*fluid_.dragImpulse(n);
-        }
+        fluid_.setDragImpulse(n, Zero);
     }
-    soil_.addNodeForces(nodeForce_);
+    forAll(nodes_, k)
+    {
+        fluid_.setDragImpulse(nodes_[k], impulse_[k]/toImpulse);
+    }
 }
 
 
 Foam::scalar Foam::physicsEffects::drag::memoryBytes() const
 {
-    // With the soil's solid fraction and velocity per node it maps
+    // With the soil's solid fraction and velocity per node it maps;
+    // twoWay: per node with soil (at most every node) four scalars and
+    // three vectors
     return
         scalar(fluid_.lattice().nBox())
-       *(sizeof(scalar) + (twoWay() ? 3 : 2)*sizeof(vector));
+       *(
+            sizeof(scalar) + 2*sizeof(vector)
+          + (twoWay() ? 4*sizeof(scalar) + 3*sizeof(vector) : 0)
+        );
 }
 
 

@@ -34,9 +34,16 @@ Foam::physicsEffects::fluid::fluid(physicsScene& scene)
 {}
 
 
-void Foam::physicsEffects::fluid::evolve(const sceneStage)
+void Foam::physicsEffects::fluid::evolve(const sceneStage stage)
 {
-    lbm_.step();
+    if (stage == sceneStage::streamPrepare)
+    {
+        lbm_.prepareStream();
+    }
+    else
+    {
+        lbm_.step();
+    }
 }
 
 

@@ -53,8 +53,8 @@ Foam::sceneStageList Foam::physicsEffects::soil::stages() const
 {
     return sceneStageList
     ({
-        scene_.needsSoilAfterWater()
-      ? sceneStage::soilAfterWater
+        scene_.needsSoilWithWater()
+      ? sceneStage::soilWithWater
       : sceneStage::soilStep
     });
 }
