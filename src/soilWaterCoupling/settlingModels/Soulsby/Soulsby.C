@@ -31,30 +31,16 @@ namespace settlingModels
 
 Foam::settlingModels::Soulsby::Soulsby(const dictionary& dict)
 :
-    settlingModel(typeName, dict),
-    d_(readPositive("d", "[m] (the grain diameter)")),
-    ws_(0)
+    settlingModel(typeName, dict)
 {
+    const scalar d = readPositive("d", "[m] (the grain diameter)");
     const scalar s = rhoSolid_/rhoFluid_;
-    const scalar Dstar = d_*std::cbrt(g_*(s - 1)/(nuFluid_*nuFluid_));
-    ws_ =
-        nuFluid_/d_
-       *(std::sqrt(10.36*10.36 + 1.049*Dstar*Dstar*Dstar) - 10.36);
-    setExponent(d_);
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::settlingModels::Soulsby::report(Ostream& os) const
-{
-    os  << "Settling Soulsby: d " << d_ << " m, terminal velocity " << ws_
-        << " m/s (Re_p " << ws_*d_/nuFluid_ << ")";
-    if (hindered_)
-    {
-        os  << ", hindered (1 - phi)^" << n_ << " (Richardson-Zaki, Rowe)";
-    }
-    os  << nl;
+    const scalar Dstar = d*std::cbrt(g_*(s - 1)/(nuFluid_*nuFluid_));
+    setVelocity
+    (
+        nuFluid_/d*(std::sqrt(10.36*10.36 + 1.049*Dstar*Dstar*Dstar) - 10.36),
+        d
+    );
 }
 
 

@@ -31,25 +31,10 @@ namespace settlingModels
 
 Foam::settlingModels::Stokes::Stokes(const dictionary& dict)
 :
-    settlingModel(typeName, dict),
-    d_(readPositive("d", "[m] (the grain diameter)")),
-    ws_((rhoSolid_ - rhoFluid_)*g_*d_*d_/(18*rhoFluid_*nuFluid_))
+    settlingModel(typeName, dict)
 {
-    setExponent(d_);
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::settlingModels::Stokes::report(Ostream& os) const
-{
-    os  << "Settling Stokes: d " << d_ << " m, terminal velocity " << ws_
-        << " m/s (Re_p " << ws_*d_/nuFluid_ << ")";
-    if (hindered_)
-    {
-        os  << ", hindered (1 - phi)^" << n_ << " (Richardson-Zaki, Rowe)";
-    }
-    os  << nl;
+    const scalar d = readPositive("d", "[m] (the grain diameter)");
+    setVelocity((rhoSolid_ - rhoFluid_)*g_*d*d/(18*rhoFluid_*nuFluid_), d);
 }
 
 

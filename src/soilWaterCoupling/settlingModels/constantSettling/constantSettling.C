@@ -34,25 +34,13 @@ Foam::settlingModels::constantSettling::constantSettling
     const dictionary& dict
 )
 :
-    settlingModel(typeName, dict),
-    d_(coeffs_.found("d") ? readPositive("d", "[m] (the grain diameter)") : 0),
-    ws_(readPositive("ws", "[m/s] (the terminal velocity)"))
+    settlingModel(typeName, dict)
 {
-    setExponent(d_);
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::settlingModels::constantSettling::report(Ostream& os) const
-{
-    os  << "Settling constant: terminal velocity " << ws_ << " m/s";
-    if (hindered_)
-    {
-        os  << ", hindered (1 - phi)^" << n_ << " (Richardson-Zaki, Rowe"
-            << (d_ > 0 ? ")" : "; no d: the fine-grain limit)");
-    }
-    os  << nl;
+    setVelocity
+    (
+        readPositive("ws", "[m/s] (the terminal velocity)"),
+        coeffs_.found("d") ? readPositive("d", "[m] (the grain diameter)") : 0
+    );
 }
 
 

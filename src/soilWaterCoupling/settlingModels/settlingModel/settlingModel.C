@@ -45,8 +45,10 @@ Foam::scalar Foam::settlingModel::readPositive
 }
 
 
-void Foam::settlingModel::setExponent(const scalar d)
+void Foam::settlingModel::setVelocity(const scalar ws, const scalar d)
 {
+    ws_ = ws;
+    d_ = d;
     if (!hindered_)
     {
         n_ = 1;
@@ -69,6 +71,8 @@ Foam::settlingModel::settlingModel(const word& type, const dictionary& dict)
     rhoSolid_(dict.get<scalar>("rhoSolid")),
     g_(dict.get<scalar>("g")),
     hindered_(coeffs_.getOrDefault<bool>("hindered", true)),
+    d_(0),
+    ws_(0),
     n_(4.7)
 {
     if (!(rhoFluid_ > 0))
@@ -96,6 +100,24 @@ Foam::settlingModel::settlingModel(const word& type, const dictionary& dict)
             "grains settle under gravity: constant/g must be non-zero"
         );
     }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::settlingModel::report(Ostream& os) const
+{
+    os  << "Settling " << type() << ": terminal velocity " << ws_ << " m/s";
+    if (d_ > 0)
+    {
+        os  << ", d " << d_ << " m (Re_p " << ws_*d_/nuFluid_ << ")";
+    }
+    if (hindered_)
+    {
+        os  << ", hindered (1 - phi)^" << n_ << " (Richardson-Zaki, Rowe"
+            << (d_ > 0 ? ")" : "; no d: the fine-grain limit)");
+    }
+    os  << nl;
 }
 
 
