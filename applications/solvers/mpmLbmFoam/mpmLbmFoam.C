@@ -73,6 +73,7 @@ int main(int argc, char *argv[])
 
             Info<< "Create time\n" << endl;
             runTimePtr.reset(new Time(Time::controlDictName, args));
+            restoreRunClock(*runTimePtr);
 
             Info<< "Create mesh for time = " << runTimePtr->timeName()
                 << nl << endl;

@@ -644,17 +644,34 @@ void Foam::materialPointSoil::advance(const scalar deltaT)
 {
     CFL_ = readCFL();
     const scalar dtStable = stableDt();
+    if (!(deltaT/dtStable <= 1e7))
+    {
+        FatalErrorInFunction
+            << "At time " << time_ << " s the soil's stable step is "
+            << dtStable << " s (soilCFL " << CFL_ << " dx/(c_p + |v|), the"
+            << " p-wave speed " << pWaveSpeed() << " m/s): "
+            << deltaT/dtStable << " sub-steps per step of deltaT " << deltaT
+            << " s, more than 1e7." << nl
+            << "    Check E and rho of the materials in constant/soilProperties"
+            << " (c_p = sqrt(M/rho)), or the soil has gone unstable (a point"
+            << " far faster than c_p)" << exit(FatalError);
+    }
     nSubSteps_ = max(label(std::ceil(deltaT/dtStable - 1e-9)), label(1));
     subDt_ = deltaT/nSubSteps_;
     if (gridExchange_)
     {
         gridExchange_->begin(deltaT);
     }
+    // The sub-steps' times from the step's start, which a restart reads
+    // back exactly (accumulated, they drifted from it: the gravity ramp
+    // then differed in the last bits after a restart)
+    const scalar start = time_;
     for (label s = 0; s < nSubSteps_; ++s)
     {
-        time_ += subDt_;
+        time_ = start + (s + 1)*subDt_;
         subStep(subDt_);
     }
+    time_ = start + deltaT;
     if (gridExchange_)
     {
         gridExchange_->end();

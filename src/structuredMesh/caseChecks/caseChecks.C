@@ -167,6 +167,30 @@ void Foam::restoreInputTraps(const bool wasTrapped)
 }
 
 
+void Foam::restoreRunClock(Time& runTime)
+{
+    const fileName path = runTime.timePath()/"uniform"/"time";
+    if (!isFile(path))
+    {
+        return;
+    }
+    IFstream is(path);
+    const dictionary timeDict(is);
+    scalar stored = 0;
+    if
+    (
+        timeDict.readIfPresent("value", stored)
+     && std::isfinite(stored)
+     && stored != runTime.value()
+     && mag(stored - runTime.value()) <= 1e-9*max(1, mag(stored))
+     && runTime.timeName(stored) == runTime.timeName()
+    )
+    {
+        runTime.setTime(stored, runTime.timeIndex());
+    }
+}
+
+
 void Foam::runSetup(const std::function<void()>& setup)
 {
     const bool throwing = FatalError.throwExceptions();
