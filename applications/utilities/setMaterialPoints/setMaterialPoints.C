@@ -306,7 +306,8 @@ static void fillPoints
         if (reg.geostatic() && top[r] > reg.surfaceHeight() + 1e-9*lattice.dx())
         {
             FatalIOErrorInFunction(reg.dict())
-                << "geostaticCoeffs/surface " << reg.surfaceHeight() << " is not allowed:"
+                << "geostaticCoeffs/surface " << reg.surfaceHeight()
+                << " is not allowed:"
                 << " region " << reg.name() << " has points up to "
                 << top[r] << " m above the origin along -g, which would"
                 << " start without stress. Set surface at or above the"
@@ -410,11 +411,17 @@ int main(int argc, char *argv[])
             const vector gravity = readGravity(soilDict, mesh, lattice.twoD());
             const PtrList<materialPointRegion> regions
             (
-                materialPointRegion::readList(dict, runTime, materialsDict, gravity)
+                materialPointRegion::readList
+                (
+                    dict, runTime, materialsDict, gravity
+                )
             );
             for (const materialPointRegion& reg : regions)
             {
-                checkInPlane(lattice.twoD(), reg.velocity(), "velocity", reg.dict());
+                checkInPlane
+                (
+                    lattice.twoD(), reg.velocity(), "velocity", reg.dict()
+                );
             }
 
             pointField candidates;
@@ -425,7 +432,10 @@ int main(int argc, char *argv[])
             labelList regionCount;
             const labelList region
             (
-                assignRegions(regions, candidates, mesh, lattice.dx()/n, regionCount)
+                assignRegions
+                (
+                    regions, candidates, mesh, lattice.dx()/n, regionCount
+                )
             );
 
             materialPoints points;

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "physicsScene.H"
+#include "caseChecks.H"
 #include "Time.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -314,26 +315,23 @@ void Foam::physicsScene::write()
     const clockValue t0(clockValue::now());
     restartManifest::beginWrite(runTime_);
     // A failed write (a full disk) reported as what it is, with what to do
-    const bool throwing = FatalError.throwExceptions();
-    const bool ioThrowing = FatalIOError.throwExceptions();
-    string failure;
-    try
-    {
-        forAll(effects_, i)
+    bool fieldsWritten = true;
+    string failure = catchFatal
+    (
+        [&]()
         {
-            effects_[i].write();
-        }
-        if (!runTime_.write())
-        {
-            failure = "OpenFOAM could not write the registered fields";
-        }
-    }
-    catch (const Foam::error& err)
+            forAll(effects_, i)
+            {
+                effects_[i].write();
+            }
+            fieldsWritten = runTime_.write();
+        },
+        false
+    );
+    if (failure.empty() && !fieldsWritten)
     {
-        failure = err.message();
+        failure = "OpenFOAM could not write the registered fields";
     }
-    FatalError.throwExceptions(throwing);
-    FatalIOError.throwExceptions(ioThrowing);
     if (!failure.empty())
     {
         FatalErrorInFunction

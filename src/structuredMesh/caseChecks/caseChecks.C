@@ -13,6 +13,7 @@ License
 
 #include "caseChecks.H"
 #include "IFstream.H"
+#include "StringStream.H"
 #include "selectEntry.H"
 #include "restartManifest.H"
 #include "Time.H"
@@ -191,29 +192,43 @@ void Foam::restoreRunClock(Time& runTime)
 }
 
 
-void Foam::runSetup(const std::function<void()>& setup)
+Foam::string Foam::catchFatal
+(
+    const std::function<void()>& work,
+    const bool whole
+)
 {
     const bool throwing = FatalError.throwExceptions();
     const bool ioThrowing = FatalIOError.throwExceptions();
-    int failed = 0;
+    string failure;
     try
     {
-        setup();
+        work();
     }
     catch (const Foam::IOerror& err)
     {
-        Perr<< nl << err << nl;
-        failed = 1;
+        OStringStream os;
+        os << err;
+        failure = whole ? os.str() : err.message();
     }
     catch (const Foam::error& err)
     {
-        Perr<< nl << err << nl;
-        failed = 1;
+        OStringStream os;
+        os << err;
+        failure = whole ? os.str() : err.message();
     }
     FatalError.throwExceptions(throwing);
     FatalIOError.throwExceptions(ioThrowing);
-    if (failed)
+    return failure;
+}
+
+
+void Foam::runSetup(const std::function<void()>& setup)
+{
+    const string failure = catchFatal(setup, true);
+    if (!failure.empty())
     {
+        Perr<< nl << failure.c_str() << nl;
         if (Pstream::parRun())
         {
             Perr<< "\nFOAM parallel run exiting\n" << endl;

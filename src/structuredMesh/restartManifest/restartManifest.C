@@ -37,7 +37,12 @@ using namespace Foam;
 
 // The files of a time folder, relative to it, sorted; without the marker
 // and the manifest
-void listFiles(const fileName& root, const fileName& rel, DynamicList<fileName>& out)
+void listFiles
+(
+    const fileName& root,
+    const fileName& rel,
+    DynamicList<fileName>& out
+)
 {
     const fileName dir = rel.empty() ? root : root/rel;
     // (no .gz filtering: a compressed file is listed by its real name)
@@ -81,7 +86,10 @@ bool isExact(const fileName& name, const wordList& exactFiles)
 word checksumWord(const uint64_t sum)
 {
     char buf[20];
-    std::snprintf(buf, sizeof(buf), "x%016llx", static_cast<unsigned long long>(sum));
+    std::snprintf
+    (
+        buf, sizeof(buf), "x%016llx", static_cast<unsigned long long>(sum)
+    );
     return word(buf);
 }
 
@@ -185,7 +193,8 @@ bool Foam::restartManifest::checksum
             h = (h ^ uint64_t(static_cast<unsigned char>(buf[b])))*prime;
         }
         // The last five bytes of the file so far
-        for (std::streamsize b = std::max<std::streamsize>(0, n - 5); b < n; ++b)
+        const std::streamsize from = std::max<std::streamsize>(0, n - 5);
+        for (std::streamsize b = from; b < n; ++b)
         {
             for (int k = 0; k < 4; ++k)
             {
