@@ -263,6 +263,26 @@ void Foam::materialPointSoil::gridVelocityFromMomentum
 }
 
 
+void Foam::materialPointSoil::removePoints(const labelUList& gone)
+{
+    points_.remove
+    (
+        gone,
+        hasPointForces_ && pointForce_.size() ? &pointForce_ : nullptr
+    );
+}
+
+
+void Foam::materialPointSoil::nodeWeights
+(
+    const label p,
+    shapeWeights& sw
+) const
+{
+    pointWeights(p, sw);
+}
+
+
 void Foam::materialPointSoil::migrate()
 {
     points_.migrate

@@ -165,6 +165,61 @@ Foam::label Foam::materialPoints::memoryPerPoint()
 }
 
 
+Foam::label Foam::materialPoints::compact
+(
+    const labelUList& gone,
+    List<vector>* extra
+)
+{
+    // Close the gaps from the first gone point on
+    const label n = size();
+    label k = gone.size() ? gone[0] : n;
+    label next = 0;
+    for (label p = k; p < n; ++p)
+    {
+        if (next < gone.size() && gone[next] == p)
+        {
+            ++next;
+            continue;
+        }
+        x[k] = x[p]; v[k] = v[p]; m[k] = m[p]; V[k] = V[p];
+        V0[k] = V0[p]; F[k] = F[p]; sigma[k] = sigma[p];
+        plasticStrain[k] = plasticStrain[p]; C[k] = C[p];
+        material[k] = material[p]; halfLength[k] = halfLength[p];
+        porosity[k] = porosity[p]; id[k] = id[p];
+        if (carriesFines)
+        {
+            fines[k] = fines[p];
+        }
+        if (extra)
+        {
+            (*extra)[k] = (*extra)[p];
+        }
+        ++k;
+    }
+    return k;
+}
+
+
+void Foam::materialPoints::remove
+(
+    const labelUList& gone,
+    List<vector>* extra
+)
+{
+    if (gone.empty())
+    {
+        return;
+    }
+    const label k = compact(gone, extra);
+    setSize(k);
+    if (extra)
+    {
+        extra->setSize(k);
+    }
+}
+
+
 void Foam::materialPoints::migrate
 (
     const labelUList& leaving,
@@ -232,32 +287,8 @@ void Foam::materialPoints::migrate
         return;
     }
 
-    // Keep the others, in their order: close the gaps from the first
-    // leaving point on
-    label k = leaving.size() ? leaving[0] : n;
-    label next = 0;
-    for (label p = k; p < n; ++p)
-    {
-        if (next < leaving.size() && leaving[next] == p)
-        {
-            ++next;
-            continue;
-        }
-        x[k] = x[p]; v[k] = v[p]; m[k] = m[p]; V[k] = V[p];
-        V0[k] = V0[p]; F[k] = F[p]; sigma[k] = sigma[p];
-        plasticStrain[k] = plasticStrain[p]; C[k] = C[p];
-        material[k] = material[p]; halfLength[k] = halfLength[p];
-        porosity[k] = porosity[p]; id[k] = id[p];
-        if (carriesFines)
-        {
-            fines[k] = fines[p];
-        }
-        if (extra)
-        {
-            (*extra)[k] = (*extra)[p];
-        }
-        ++k;
-    }
+    // Keep the others, in their order
+    label k = compact(leaving, extra);
     if (k + nArriving != n)
     {
         setSize(k + nArriving);

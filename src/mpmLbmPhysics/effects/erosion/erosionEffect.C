@@ -177,15 +177,53 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     uPhysical_(fluid_.lattice().nBox(), Zero),
     u_(fluid_.lattice().nBox(), Zero),
     source_(fluid_.lattice().nBox(), Zero),
-    eroded_(0)
+    eroded_(0),
+    surfaceSolidFraction_(0),
+    minVolumeFraction_(0),
+    removeVolume_(0),
+    removed_(0)
 {
     if (law_->surface())
     {
-        FatalIOErrorInFunction(dict_)
-            << "erosionLaw " << law_->type() << " erodes the soil's surface,"
-            << " which the erosion effect does not do yet (the wall shear"
-            << " stress at the soil's surface); the law it applies now:"
-            << " suffusion" << exit(FatalIOError);
+        // The densest soil's solid fraction and the largest point: the
+        // core's, which erosion at the surface leaves as it was (a
+        // restart finds the same)
+        const materialPoints& pts = soil_.mpm().points();
+        scalar densest = 0;
+        scalar largest = 0;
+        forAll(pts.porosity, p)
+        {
+            densest = max(densest, 1 - pts.porosity[p]);
+            largest = max(largest, pts.V0[p]);
+        }
+        reduce(densest, maxOp<scalar>());
+        reduce(largest, maxOp<scalar>());
+        surfaceSolidFraction_ =
+            dict_.getOrDefault<scalar>("surfaceSolidFraction", 0.5*densest);
+        if (!(surfaceSolidFraction_ > 0) || !(surfaceSolidFraction_ < 1))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "surfaceSolidFraction " << surfaceSolidFraction_ << " is"
+                << " not allowed: the nodal solid fraction that marks the"
+                << " soil's surface, in (0, 1)" << exit(FatalIOError);
+        }
+        minVolumeFraction_ =
+            dict_.getOrDefault<scalar>("minVolumeFraction", 0.05);
+        if (!(minVolumeFraction_ >= 0 && minVolumeFraction_ < 1))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "minVolumeFraction " << minVolumeFraction_ << " is not"
+                << " allowed: a point left with less than this fraction of"
+                << " the largest point's initial volume is removed (its"
+                << " mass given to the water), in [0, 1)"
+                << exit(FatalIOError);
+        }
+        removeVolume_ = minVolumeFraction_*largest;
+        const label nBox = fluid_.lattice().nBox();
+        phi_.setSize(nBox, Zero);
+        wallShear_.setSize(nBox, Zero);
+        demand_.setSize(nBox, Zero);
+        weightSum_.setSize(nBox, Zero);
     }
     if (suspension_.field().dimensions() != dimDensity)
     {
@@ -194,7 +232,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
             << " are a mass per volume of water " << dimDensity << ", not "
             << suspension_.field().dimensions() << exit(FatalIOError);
     }
-    if (!soil_.mpm().points().carriesFines)
+    if (!law_->surface() && !soil_.mpm().points().carriesFines)
     {
         FatalIOErrorInFunction(dict_)
             << "The material points carry no fines: give a region of"
@@ -237,11 +275,23 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
 
     Info<< "Erosion of the soil's fines" << nl;
     law_->report(Info);
-    forAll(finesLimit_, mati)
+    if (law_->surface())
     {
-        Info<< "    " << soil_.mpm().materials()[mati].name()
-            << ": finesLimit " << finesLimit_[mati] << nl;
+        Info<< "    The soil's surface: nodal solid fraction "
+            << surfaceSolidFraction_ << nl
+            << "    Points left with less than " << minVolumeFraction_
+            << " of the largest point's initial volume ("
+            << removeVolume_ << " m3) are removed" << nl;
     }
+    else
+    {
+        forAll(finesLimit_, mati)
+        {
+            Info<< "    " << soil_.mpm().materials()[mati].name()
+                << ": finesLimit " << finesLimit_[mati] << nl;
+        }
+    }
+
     suspension_.report(Info);
     if (settling_.valid())
     {
@@ -348,7 +398,14 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
         {
             settling_->update(suspension_, porosity());
         }
-        erodePoints();
+        if (law_->surface())
+        {
+            erodeSurface();
+        }
+        else
+        {
+            erodePoints();
+        }
         suspension_.step(u_, porosity(), &source_);
     }
     else if (stage == sceneStage::endStep)
@@ -400,6 +457,10 @@ Foam::string Foam::physicsEffects::erosion::plan() const
 
 void Foam::physicsEffects::erosion::write()
 {
+    if (law_->surface())
+    {
+        writeWallShearStress();
+    }
     suspension_.updateField(porosity());
     suspension_.writePopulations();
 }
@@ -426,9 +487,15 @@ Foam::scalar Foam::physicsEffects::erosion::memoryBytes() const
 
 Foam::string Foam::physicsEffects::erosion::progress() const
 {
-    return
+    string s =
         "eroded " + Foam::name(eroded()) + " kg, suspended "
       + Foam::name(suspension_.content()) + " kg";
+    const label nRemoved = returnReduce(removed_, sumOp<label>());
+    if (nRemoved)
+    {
+        s += ", " + Foam::name(nRemoved) + " points removed";
+    }
+    return s;
 }
 
 

@@ -1,0 +1,366 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+Description
+    erosion: the soil's surface eroded by the water's shear (a surface law:
+    excessShearStress, Shields).
+
+    The surface. A water node n (owned, nodal solid fraction phi_n below
+    surfaceSolidFraction phi_s) is on the surface when its neighbour
+    inward, n - e, is at or above phi_s; e is the lattice axis nearest the
+    outward normal -grad(phi)/|grad(phi)|. The surface lies between the
+    two, delta = (phi_s - phi_n)/(phi_(n-e) - phi_n) cells from n.
+
+    The wall shear stress. The water's viscous stress sigma (the lattice's
+    own non-equilibrium moment, latticeBoltzmannFluid::viscousStress) gives
+    the tangential traction t = sigma.m - (m.sigma.m) m, m the normal, at
+    up to four nodes along e clear of soil (phi < phi_s/20), from n,
+    n + e or n + 2e on, within four nodes of n. In the water beside a wall the traction is linear along the
+    normal (the momentum balance of a slab of a fully developed flow:
+    d tau/dn = dp/ds), so the least-squares line through them is taken to
+    the surface. (The nodes inside the diffuse surface feel the porous
+    drag, whose momentum sink bends the profile: they are skipped. The
+    non-equilibrium stress also has an odd-even ripple of about 1% along a
+    wall's normal: the fit over four nodes averages it.)
+
+    The eroded mass. Each surface node erodes the law's rate times its
+    share of the surface's area, dx^(d-1)/|m.e| (the surface's area over
+    its projection on the face normal to e), in the step's time. The mass
+    is taken from the points in the node's support in proportion to their
+    weight there times their mass (the outer points go first; a weight on a
+    node beyond a wall counts for the node it folds into, as the soil's
+    own transfers do), a point
+    giving at most what it has. The soil leaves whole, grains and pores at
+    the point's dry density: the point shrinks (its mass, volume and
+    initial volume by the same factor) and keeps its porosity, stress and
+    wave speed. (Were its grains taken and its volume kept, a point near
+    empty would still carry its stress on next to no mass: its wave speed,
+    and the soil's stable step with it, would run away.) A point left with
+    less than minVolumeFraction of the largest point's initial volume is
+    removed and its mass given to the water.
+
+    Bonelli & Brivois (2008), Int. J. Numer. Anal. Meth. Geomech. 32,
+    1573-1595: the surface's normal velocity is m_dot/rho_d, m_dot the
+    eroded mass per area and time, rho_d the soil's dry density.
+
+\*---------------------------------------------------------------------------*/
+
+#include "erosionEffect.H"
+#include "physicsScene.H"
+#include "soilEffect.H"
+#include "materialPointSoil.H"
+#include "shapeFunction.H"
+#include "soilWalls.H"
+#include "volFields.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::physicsEffects::erosion::surfaceDemand()
+{
+    const latticeMesh& lattice = fluid_.lattice();
+    const haloExchange& halo = lattice.halo();
+    const List<unsigned char>& kind = lattice.kind();
+    const label nDim = lattice.nDim();
+    const label stride[3] =
+        {1, lattice.stride().y(), lattice.stride().z()};
+
+    phi_ = soil_.solidFraction();
+    fluid_.viscousStress(sigma_);
+    halo.copyToHalo({haloExchange::field(phi_), haloExchange::field(sigma_)});
+
+    auto inside = [&](const label n)
+    {
+        return
+            n >= 0 && n < kind.size()
+         && (
+                kind[n] == latticeMesh::OWNED
+             || kind[n] == latticeMesh::HALO
+            );
+    };
+
+    const scalar phiS = surfaceSolidFraction_;
+    const scalar phiClear = 0.05*phiS;
+    const label nFit = 4;
+    const label reach = haloWidth(scene_.mesh());
+    const scalar dt = scene_.mesh().time().deltaTValue();
+    const scalar columnArea = lattice.cellVolume()/lattice.dx();
+
+    wallShear_ = Zero;
+    demand_ = 0;
+    for (const label n : lattice.cellNode())
+    {
+        if (!(phi_[n] < phiS))
+        {
+            continue;
+        }
+
+        // The outward normal from the solid fraction's gradient (a
+        // one-sided difference beside the domain's edge)
+        vector grad(Zero);
+        for (label d = 0; d < nDim; ++d)
+        {
+            const label up = n + stride[d];
+            const label down = n - stride[d];
+            const scalar pUp = inside(up) ? phi_[up] : phi_[n];
+            const scalar pDown = inside(down) ? phi_[down] : phi_[n];
+            grad[d] = 0.5*(pUp - pDown);
+        }
+        const scalar magGrad = mag(grad);
+        if (!(magGrad > SMALL))
+        {
+            continue;
+        }
+        const vector normal = -grad/magGrad;
+
+        // The axis nearest the normal, and the neighbour inward
+        label axis = 0;
+        for (label d = 1; d < nDim; ++d)
+        {
+            if (mag(normal[d]) > mag(normal[axis]))
+            {
+                axis = d;
+            }
+        }
+        const label step = normal[axis] > 0 ? stride[axis] : -stride[axis];
+        const label in = n - step;
+        if (!inside(in) || !(phi_[in] >= phiS))
+        {
+            continue;
+        }
+        const scalar delta = (phiS - phi_[n])/(phi_[in] - phi_[n]);
+
+        // The water nodes outward clear of the soil: the first, k0 <= 2
+        // nodes out, and up to three more within the halo's reach
+        auto traction = [&](const label a)
+        {
+            const vector t = sigma_[a] & normal;
+            return vector(t - (normal & t)*normal);
+        };
+        label k0 = -1;
+        for (label k = 0; k <= 2 && k0 < 0; ++k)
+        {
+            const label a = n + k*step;
+            if (!inside(a))
+            {
+                break;
+            }
+            if (phi_[a] < phiClear)
+            {
+                k0 = k;
+            }
+        }
+        if (k0 < 0)
+        {
+            // Not clear within reach (a narrow gap): the surface node
+            k0 = 0;
+        }
+
+        // The least-squares line through them (the non-equilibrium stress
+        // carries an odd-even ripple of about 1% along a wall's normal:
+        // four nodes average it out), at the surface
+        label m = 0;
+        scalar sx = 0, sxx = 0;
+        vector st(Zero), sxt(Zero);
+        for (label k = k0; k < k0 + nFit && k <= reach; ++k)
+        {
+            const label a = n + k*step;
+            if (!inside(a) || (k > k0 && !(phi_[a] < phiClear)))
+            {
+                break;
+            }
+            const vector t = traction(a);
+            ++m;
+            sx += k;
+            sxx += k*k;
+            st += t;
+            sxt += k*t;
+        }
+        vector tw = traction(n);
+        if (m >= 2)
+        {
+            const scalar det = m*sxx - sx*sx;
+            const vector slope = (m*sxt - sx*st)/det;
+            const vector intercept = (st - slope*sx)/m;
+            tw = intercept - delta*slope;
+        }
+        wallShear_[n] = tw;
+
+        const scalar rate = law_->surfaceRate(mag(tw));
+        if (rate > 0)
+        {
+            demand_[n] = rate*columnArea/mag(normal[axis])*dt;
+        }
+    }
+}
+
+
+void Foam::physicsEffects::erosion::erodeSurface()
+{
+    surfaceDemand();
+
+    bool any = false;
+    for (const label n : fluid_.lattice().cellNode())
+    {
+        if (demand_[n] > 0)
+        {
+            any = true;
+            break;
+        }
+    }
+    source_ = 0;
+    if (!returnReduce(any, orOp<bool>()))
+    {
+        return;
+    }
+
+    const latticeMesh& lattice = fluid_.lattice();
+    const haloExchange& halo = lattice.halo();
+    const bool parallel = Pstream::parRun();
+    materialPointSoil& mpm = soil_.mpm();
+    materialPoints& pts = mpm.points();
+    const soilWalls& walls = mpm.walls();
+    const scalar Vcell = lattice.cellVolume();
+
+    // The demand where the points see it (their supports reach the halo)
+    halo.copyToHalo({haloExchange::field(demand_)});
+
+    // Each surface node's sum of weight times mass of the points it takes
+    // from
+    weightSum_ = 0;
+    shapeWeights sw;
+    forAll(pts.x, p)
+    {
+        mpm.nodeWeights(p, sw);
+        const scalar m = pts.m[p];
+        sw.forEachNode
+        (
+            [&](label i, label j, label k, scalar N, const vector&)
+            {
+                const label node = walls.image(lattice.node(i, j, k));
+                if (demand_[node] > 0)
+                {
+                    weightSum_[node] += N*m;
+                }
+            }
+        );
+    }
+    if (parallel)
+    {
+        halo.addToOwners({haloExchange::field(weightSum_)});
+    }
+    halo.copyToHalo({haloExchange::field(weightSum_)});
+
+    // Each point gives its shares; the eroded mass enters the water at the
+    // node that asked for it
+    DynamicList<label> gone;
+    forAll(pts.x, p)
+    {
+        mpm.nodeWeights(p, sw);
+        const scalar m = pts.m[p];
+        scalar asked = 0;
+        sw.forEachNode
+        (
+            [&](label i, label j, label k, scalar N, const vector&)
+            {
+                const label node = walls.image(lattice.node(i, j, k));
+                if (demand_[node] > 0 && weightSum_[node] > 0)
+                {
+                    asked += demand_[node]*N*m/weightSum_[node];
+                }
+            }
+        );
+        if (!(asked > 0))
+        {
+            continue;
+        }
+
+        // What the point can give, and whether it is left too small
+        const scalar keep = max(m - min(asked, m), scalar(0))/m;
+        const bool emptied = !(keep*pts.V0[p] >= removeVolume_);
+        const scalar given = emptied ? m : m - keep*m;
+        const scalar scale = given/asked;
+        sw.forEachNode
+        (
+            [&](label i, label j, label k, scalar N, const vector&)
+            {
+                const label node = walls.image(lattice.node(i, j, k));
+                if (demand_[node] > 0 && weightSum_[node] > 0)
+                {
+                    source_[node] +=
+                        scale*demand_[node]*N*m/weightSum_[node]/Vcell;
+                }
+            }
+        );
+        eroded_ += given;
+        if (emptied)
+        {
+            gone.append(p);
+        }
+        else
+        {
+            // The soil leaves whole, at the point's density: the point
+            // shrinks (V and V0 alike: its deformation is unchanged), its
+            // porosity and stress stay, and its stiffness per mass with
+            // them (its wave speed: the soil's stable step)
+            pts.m[p] = m - given;
+            pts.V[p] *= keep;
+            pts.V0[p] *= keep;
+        }
+    }
+
+    // The water's nodes own what the halo images received
+    if (parallel)
+    {
+        halo.addToOwners({haloExchange::field(source_)});
+    }
+    const List<unsigned char>& kind = lattice.kind();
+    forAll(source_, n)
+    {
+        if (kind[n] != latticeMesh::OWNED)
+        {
+            source_[n] = 0;
+        }
+    }
+
+    removed_ += gone.size();
+    mpm.removePoints(gone);
+    soil_.pointsChanged();
+}
+
+
+void Foam::physicsEffects::erosion::writeWallShearStress() const
+{
+    const fvMesh& mesh = scene_.mesh();
+    volVectorField fld
+    (
+        IOobject
+        (
+            "wallShearStress",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensionedVector(dimPressure, Zero)
+    );
+    const labelList& cellNode = fluid_.lattice().cellNode();
+    vectorField& values = fld.primitiveFieldRef();
+    forAll(cellNode, celli)
+    {
+        values[celli] = wallShear_[cellNode[celli]];
+    }
+    fld.write();
+}
+
+
+// ************************************************************************* //
