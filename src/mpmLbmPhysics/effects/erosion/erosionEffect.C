@@ -20,6 +20,9 @@ License
 #include "uniformDimensionedFields.H"
 #include "addToRunTimeSelectionTable.H"
 #include "addToMemberFunctionSelectionTable.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "OSspecific.H"
 
 namespace Foam
 {
@@ -181,23 +184,41 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     surfaceSolidFraction_(0),
     minVolumeFraction_(0),
     removeVolume_(0),
+    densest_(0),
+    largest_(0),
     removed_(0)
 {
     if (law_->surface())
     {
-        // The densest soil's solid fraction and the largest point: the
-        // core's, which erosion at the surface leaves as it was (a
-        // restart finds the same)
-        const materialPoints& pts = soil_.mpm().points();
+        // The densest soil's solid fraction and the largest point at the
+        // run's start; a restart takes them from the written time (the
+        // points' porosity follows their deformation since)
+        const fileName statePath
+        (
+            scene.mesh().time().timePath()/"uniform"/"erosionState"
+        );
         scalar densest = 0;
         scalar largest = 0;
-        forAll(pts.porosity, p)
+        if (isFile(statePath))
         {
-            densest = max(densest, 1 - pts.porosity[p]);
-            largest = max(largest, pts.V0[p]);
+            IFstream is(statePath);
+            const dictionary state(is);
+            densest = state.get<scalar>("densestSolidFraction");
+            largest = state.get<scalar>("largestPointVolume");
         }
-        reduce(densest, maxOp<scalar>());
-        reduce(largest, maxOp<scalar>());
+        else
+        {
+            const materialPoints& pts = soil_.mpm().points();
+            forAll(pts.porosity, p)
+            {
+                densest = max(densest, 1 - pts.porosity[p]);
+                largest = max(largest, pts.V0[p]);
+            }
+            reduce(densest, maxOp<scalar>());
+            reduce(largest, maxOp<scalar>());
+        }
+        densest_ = densest;
+        largest_ = largest;
         surfaceSolidFraction_ =
             dict_.getOrDefault<scalar>("surfaceSolidFraction", 0.5*densest);
         if (!(surfaceSolidFraction_ > 0) || !(surfaceSolidFraction_ < 1))
@@ -460,6 +481,19 @@ void Foam::physicsEffects::erosion::write()
     if (law_->surface())
     {
         writeWallShearStress();
+
+        // What a restart from this time must start from, to the last bit
+        const fileName dir(scene_.mesh().time().timePath()/"uniform");
+        mkDir(dir);
+        OFstream os(dir/"erosionState");
+        os.precision(17);
+        os  << "densestSolidFraction " << densest_ << ";" << nl
+            << "largestPointVolume " << largest_ << ";" << nl;
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "Could not write " << os.name() << exit(FatalError);
+        }
     }
     suspension_.updateField(porosity());
     suspension_.writePopulations();
