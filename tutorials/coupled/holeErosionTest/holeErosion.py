@@ -54,7 +54,10 @@ def main():
     bmd = open(os.path.join(case, 'system', 'blockMeshDict')).read()
     nx, ny, _ = map(int, re.search(
         r'hex\s*\([^)]*\)\s*\((\d+)\s+(\d+)\s+(\d+)\)', bmd).groups())
-    length = float(re.search(r'\(0 0 0\)\s*\(([-+0-9.eE]+)', bmd).group(1))
+    zero = r'0(?:\.0*)?'
+    length = float(re.search(
+        r'\(\s*%s\s+%s\s+%s\s*\)\s*\(([-+0-9.eE]+)' % (zero, zero, zero),
+        bmd).group(1))
     dx = length/nx
     ero = os.path.join(case, 'constant', 'erosionProperties')
     kEr = entry(ero, 'kEr')

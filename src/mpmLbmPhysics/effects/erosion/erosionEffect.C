@@ -186,6 +186,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     removeVolume_(0),
     densest_(0),
     largest_(0),
+    anyOpen_(false),
     removed_(0)
 {
     if (law_->surface())
@@ -229,7 +230,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
                 << " soil's surface, in (0, 1)" << exit(FatalIOError);
         }
         minVolumeFraction_ =
-            dict_.getOrDefault<scalar>("minVolumeFraction", 0.05);
+            dict_.getOrDefault<scalar>("minVolumeFraction", 1e-3);
         if (!(minVolumeFraction_ >= 0 && minVolumeFraction_ < 1))
         {
             FatalIOErrorInFunction(dict_)
@@ -240,11 +241,14 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
                 << exit(FatalIOError);
         }
         removeVolume_ = minVolumeFraction_*largest;
+        findOpenNodes();
         const label nBox = fluid_.lattice().nBox();
         phi_.setSize(nBox, Zero);
         wallShear_.setSize(nBox, Zero);
         demand_.setSize(nBox, Zero);
         weightSum_.setSize(nBox, Zero);
+        emptiedMass_.setSize(nBox, Zero);
+        emptiedWeight_.setSize(nBox, Zero);
     }
     if (suspension_.field().dimensions() != dimDensity)
     {
