@@ -14,6 +14,7 @@ License
 #include "materialPointRegion.H"
 #include "Time.H"
 #include "IOobject.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -149,6 +150,19 @@ Foam::materialPointRegion::materialPointRegion
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::materialPointRegion::scopeNames(dictionary& dict)
+{
+    for (entry& e : dict)
+    {
+        if (e.isDict())
+        {
+            e.dict().name() = dict.name() + "." + e.keyword();
+            scopeNames(e.dict());
+        }
+    }
+}
+
+
 Foam::PtrList<Foam::materialPointRegion> Foam::materialPointRegion::readList
 (
     const IOdictionary& dict,
@@ -172,6 +186,7 @@ Foam::PtrList<Foam::materialPointRegion> Foam::materialPointRegion::readList
         }
         regionEntries[r].dict().name() =
             dict.objectPath() + ".regions." + regionEntries[r].keyword();
+        scopeNames(regionEntries[r].dict());
     }
     if (regionEntries.empty())
     {
@@ -182,18 +197,34 @@ Foam::PtrList<Foam::materialPointRegion> Foam::materialPointRegion::readList
     PtrList<materialPointRegion> regions(regionEntries.size());
     forAll(regionEntries, r)
     {
-        regions.set
+        // OpenFOAM's surfaces raise errors that name no file (searchableBox:
+        // "Illegal bounding box"): each is given the region's
+        const dictionary& rd = regionEntries[r].dict();
+        const string failure = catchFatal
         (
-            r,
-            new materialPointRegion
-            (
-                regionEntries[r].keyword(),
-                regionEntries[r].dict(),
-                runTime,
-                materialsDict,
-                gravity
-            )
+            [&]()
+            {
+                regions.set
+                (
+                    r,
+                    new materialPointRegion
+                    (
+                        regionEntries[r].keyword(),
+                        rd,
+                        runTime,
+                        materialsDict,
+                        gravity
+                    )
+                );
+            },
+            false
         );
+        if (!failure.empty())
+        {
+            FatalIOErrorInFunction(rd)
+                << "Region " << regionEntries[r].keyword() << ": "
+                << failure.c_str() << exit(FatalIOError);
+        }
     }
     return regions;
 }

@@ -503,6 +503,25 @@ void Foam::materialPoints::readFields
         [](const scalar e) { return e >= 0; },
         "non-negative: an accumulated plastic strain"
     );
+
+    // The soil keeps V = det(F) V0 at every step (erosion shrinks V and
+    // V0 alike): a volume, initial volume or deformation gradient damaged
+    // alone breaks it (a damaged initialVolume ran away as det F 1e271)
+    forAll(V, i)
+    {
+        const scalar J = det(F[i]);
+        if (!(mag(V[i] - J*V0[i]) <= 1e-9*V[i]))
+        {
+            FatalErrorInFunction
+                << "file: " << (dir/"volume").c_str() << ", values: volume "
+                << V[i] << " at index " << i << " is not det(F) "
+                << J << " x initialVolume " << V0[i] << " (" << J*V0[i]
+                << "), as the soil keeps it." << nl
+                << "    One of volume, initialVolume and F in " << dir.c_str()
+                << " is damaged: restore them, or start from an earlier time"
+                << " or from the initial fields" << exit(FatalError);
+        }
+    }
 }
 
 

@@ -18,6 +18,8 @@ License
 #include "Pstream.H"
 #include "stringList.H"
 #include "StringStream.H"
+#include "caseChecks.H"
+#include "HashTable.H"
 #include <fstream>
 #include <iterator>
 #include <cstdio>
@@ -502,8 +504,38 @@ void Foam::restartManifest::checkFiles(const Time& runTime)
         // case's uniform/: the state is compared over all processors)
         return;
     }
-    const dictionary manifest(readManifest(path));
-    const label nProcs = manifest.get<label>("nProcessors");
+    // (OpenFOAM's list and token errors name no file: it is given here)
+    dictionary manifest;
+    label nProcs = 0;
+    stringList names;
+    scalarList sizes;
+    wordList sums;
+    labelList exact;
+    const string unreadable = catchFatal
+    (
+        [&]()
+        {
+            manifest = readManifest(path);
+            nProcs = manifest.get<label>("nProcessors");
+            if (nProcs == Pstream::nProcs())
+            {
+                names = manifest.get<stringList>("files");
+                sizes = manifest.get<scalarList>("sizes");
+                sums = manifest.get<wordList>("checksums");
+                exact = manifest.get<labelList>("exact");
+            }
+        },
+        false
+    );
+    if (!unreadable.empty())
+    {
+        FatalErrorInFunction
+            << "file: " << path.c_str() << " cannot be read: "
+            << unreadable.c_str() << nl
+            << "    It lists what a restart from time " << runTime.timeName()
+            << " must find: restore it, or restart from an earlier time"
+            << exit(FatalError);
+    }
     if (nProcs != Pstream::nProcs())
     {
         // Decomposed or reconstructed since: the files are new, the state
@@ -511,10 +543,6 @@ void Foam::restartManifest::checkFiles(const Time& runTime)
         return;
     }
 
-    const stringList names(manifest.get<stringList>("files"));
-    const scalarList sizes(manifest.get<scalarList>("sizes"));
-    const wordList sums(manifest.get<wordList>("checksums"));
-    const labelList exact(manifest.get<labelList>("exact"));
     if
     (
         sizes.size() != names.size() || sums.size() != names.size()
@@ -631,9 +659,41 @@ void Foam::restartManifest::checkState
         return;
     }
     const bool here = !texts[Pstream::myProcNo()].empty();
-    IStringStream is(texts[here ? Pstream::myProcNo() : first]);
-    const dictionary manifest(is);
-    const label nProcs = manifest.get<label>("nProcessors");
+
+    // The manifest's entries (parsed from the text gathered across the
+    // processors: an error would name no file, so it is given this one)
+    label nProcs = 0;
+    word writer;
+    HashTable<scalar> expected;
+    const string damaged = catchFatal
+    (
+        [&]()
+        {
+            IStringStream is(texts[here ? Pstream::myProcNo() : first]);
+            const dictionary manifest(is);
+            nProcs = manifest.get<label>("nProcessors");
+            writer = manifest.get<word>("writer");
+            const dictionary& written =
+                manifest.subDict
+                (
+                    nProcs == Pstream::nProcs() ? "local" : "global"
+                );
+            for (const word& key : written.sortedToc())
+            {
+                expected.set(key, written.get<scalar>(key));
+            }
+        },
+        false
+    );
+    if (!damaged.empty())
+    {
+        FatalErrorInFunction
+            << "file: " << path.c_str() << " cannot be read: "
+            << damaged.c_str() << nl
+            << "    It lists what a restart from time " << runTime.timeName()
+            << " must find: restore it, or restart from an earlier time"
+            << exit(FatalError);
+    }
     const bool sameDecomposition = nProcs == Pstream::nProcs();
     if (sameDecomposition && !here)
     {
@@ -645,11 +705,8 @@ void Foam::restartManifest::checkState
             << "    Restore it or restart from an earlier time"
             << exit(FatalError);
     }
-    const dictionary& written =
-        manifest.subDict(sameDecomposition ? "local" : "global");
-
     DynamicList<string> problems;
-    for (const word& key : written.sortedToc())
+    for (const word& key : expected.sortedToc())
     {
         scalar value = localState.lookup(key, 0);
         label has = localState.found(key);
@@ -658,12 +715,12 @@ void Foam::restartManifest::checkState
             reduce(value, sumOp<scalar>());
             reduce(has, sumOp<label>());
         }
-        const scalar expected = written.get<scalar>(key);
-        if (has && !sameValue(value, expected))
+        const scalar written = expected[key];
+        if (has && !sameValue(value, written))
         {
             OStringStream os;
             os.precision(17);
-            os  << key << ": read " << value << ", written " << expected;
+            os  << key << ": read " << value << ", written " << written;
             problems.append(os.str());
         }
     }
@@ -671,7 +728,7 @@ void Foam::restartManifest::checkState
     {
         FatalErrorInFunction
             << "The state read from time " << runTime.timeName() << " does"
-            << " not match what " << manifest.get<word>("writer") << " wrote ("
+            << " not match what " << writer << " wrote ("
             << path << ", " << nProcs << " processor(s)"
             << (sameDecomposition && Pstream::parRun()
                 ? ", compared on this processor" : ", compared over all")

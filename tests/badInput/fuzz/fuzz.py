@@ -1288,7 +1288,7 @@ def main():
         print('fuzz: %d of %d refusals do not name the mutated file'
               % (len(unnamed), count['refused']))
     elif count['refused']:
-        ok.append(foamio.check_open(
+        ok.append(foamio.check(
             not unnamed, 'refusals name the mutated file',
             '%d of %d refusals do not' % (len(unnamed), count['refused'])))
     for o in unnamed[:8]:
