@@ -76,27 +76,7 @@ void Foam::latticeBoltzmannFluid::writeViscousStress()
 {
     List<symmTensor> sigma;
     viscousStress(sigma);
-    volSymmTensorField fld
-    (
-        IOobject
-        (
-            "viscousStress",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_,
-        dimensionedSymmTensor(dimPressure, Zero)
-    );
-    const labelList& cellNode = lattice_.cellNode();
-    symmTensorField& values = fld.primitiveFieldRef();
-    forAll(cellNode, celli)
-    {
-        values[celli] = sigma[cellNode[celli]];
-    }
-    fld.write();
+    writeNodeField(lattice_, "viscousStress", sigma, dimPressure, false);
 }
 
 

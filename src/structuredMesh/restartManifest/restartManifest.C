@@ -140,6 +140,27 @@ dictionary readManifest(const fileName& path)
     return dictionary(is);
 }
 
+
+// Stop naming the manifest when reading it failed (OpenFOAM's list and
+// token errors name no file; nor does a stream parsed from a string)
+void unreadableManifest
+(
+    const fileName& path,
+    const Time& runTime,
+    const string& failure
+)
+{
+    if (!failure.empty())
+    {
+        FatalErrorInFunction
+            << "file: " << path.c_str() << " cannot be read: "
+            << failure.c_str() << nl
+            << "    It lists what a restart from time " << runTime.timeName()
+            << " must find: restore it, or restart from an earlier time"
+            << exit(FatalError);
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -527,15 +548,7 @@ void Foam::restartManifest::checkFiles(const Time& runTime)
         },
         false
     );
-    if (!unreadable.empty())
-    {
-        FatalErrorInFunction
-            << "file: " << path.c_str() << " cannot be read: "
-            << unreadable.c_str() << nl
-            << "    It lists what a restart from time " << runTime.timeName()
-            << " must find: restore it, or restart from an earlier time"
-            << exit(FatalError);
-    }
+    unreadableManifest(path, runTime, unreadable);
     if (nProcs != Pstream::nProcs())
     {
         // Decomposed or reconstructed since: the files are new, the state
@@ -685,15 +698,7 @@ void Foam::restartManifest::checkState
         },
         false
     );
-    if (!damaged.empty())
-    {
-        FatalErrorInFunction
-            << "file: " << path.c_str() << " cannot be read: "
-            << damaged.c_str() << nl
-            << "    It lists what a restart from time " << runTime.timeName()
-            << " must find: restore it, or restart from an earlier time"
-            << exit(FatalError);
-    }
+    unreadableManifest(path, runTime, damaged);
     const bool sameDecomposition = nProcs == Pstream::nProcs();
     if (sameDecomposition && !here)
     {

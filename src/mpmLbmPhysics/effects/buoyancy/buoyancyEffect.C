@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "buoyancyEffect.H"
+#include "nodeFieldIO.H"
 #include "caseChecks.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
@@ -303,36 +304,7 @@ void Foam::physicsEffects::buoyancy::write()
 {
     // Lattice units, binary whatever the case's writeFormat (as the
     // populations): a restart continues bit for bit
-    const fvMesh& mesh = scene_.mesh();
-    volVectorField Fw
-    (
-        IOobject
-        (
-            "lbmStaticForce",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh,
-        dimensionedVector(dimless, Zero)
-    );
-    const labelList& cellNode = fluid_.lattice().cellNode();
-    forAll(cellNode, celli)
-    {
-        Fw[celli] = applied_[cellNode[celli]];
-    }
-    // (17 digits: a uniform field is written as text even in binary)
-    const unsigned int precision = IOstream::defaultPrecision(17);
-    Fw.writeObject
-    (
-        IOstream::BINARY,
-        IOstream::currentVersion,
-        mesh.time().writeCompression(),
-        true
-    );
-    IOstream::defaultPrecision(precision);
+    writeNodeField(fluid_.lattice(), "lbmStaticForce", applied_, dimless, true);
 }
 
 

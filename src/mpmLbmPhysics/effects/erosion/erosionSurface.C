@@ -23,10 +23,12 @@ Description
     own non-equilibrium moment, latticeBoltzmannFluid::viscousStress) gives
     the tangential traction t = sigma.m - (m.sigma.m) m, m the normal, at
     up to four nodes along e clear of soil (phi < phi_s/20), from n,
-    n + e or n + 2e on, within four nodes of n. In the water beside a wall the traction is linear along the
-    normal (the momentum balance of a slab of a fully developed flow:
-    d tau/dn = dp/ds), so the least-squares line through them is taken to
-    the surface. (The nodes inside the diffuse surface feel the porous
+    n + e or n + 2e on, within four nodes of n. In the water beside a wall
+    the traction is linear along the normal (the momentum balance of a
+    slab of a fully developed flow: d tau/dn = dp/ds), so the least-squares
+    line through them is taken to the surface. Beside a pressure patch the
+    stress is the next node inward's (the boundary's extrapolated
+    populations are not the flow's). (The nodes inside the diffuse surface feel the porous
     drag, whose momentum sink bends the profile: they are skipped. The
     non-equilibrium stress also has an odd-even ripple of about 1% along a
     wall's normal: the fit over four nodes averages it.)
@@ -62,7 +64,7 @@ Description
 #include "materialPointSoil.H"
 #include "shapeFunction.H"
 #include "soilWalls.H"
-#include "volFields.H"
+#include "nodeFieldIO.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -495,28 +497,10 @@ void Foam::physicsEffects::erosion::erodeSurface()
 
 void Foam::physicsEffects::erosion::writeWallShearStress() const
 {
-    const fvMesh& mesh = scene_.mesh();
-    volVectorField fld
+    writeNodeField
     (
-        IOobject
-        (
-            "wallShearStress",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh,
-        dimensionedVector(dimPressure, Zero)
+        fluid_.lattice(), "wallShearStress", wallShear_, dimPressure, false
     );
-    const labelList& cellNode = fluid_.lattice().cellNode();
-    vectorField& values = fld.primitiveFieldRef();
-    forAll(cellNode, celli)
-    {
-        values[celli] = wallShear_[cellNode[celli]];
-    }
-    fld.write();
 }
 
 
