@@ -28,10 +28,10 @@ Description
     slab of a fully developed flow: d tau/dn = dp/ds), so the least-squares
     line through them is taken to the surface. Beside a pressure patch the
     stress is the next node inward's (the boundary's extrapolated
-    populations are not the flow's). (The nodes inside the diffuse surface feel the porous
-    drag, whose momentum sink bends the profile: they are skipped. The
-    non-equilibrium stress also has an odd-even ripple of about 1% along a
-    wall's normal: the fit over four nodes averages it.)
+    populations are not the flow's). (The nodes inside the diffuse surface
+    feel the porous drag, whose momentum sink bends the profile: they are
+    skipped. The non-equilibrium stress also has an odd-even ripple of
+    about 1% along a wall's normal: the fit over four nodes averages it.)
 
     The eroded mass. Each surface node erodes the law's rate times its
     share of the surface's area, dx^(d-1)/|m.e| (the surface's area over
@@ -298,12 +298,10 @@ void Foam::physicsEffects::erosion::erodeSurface()
     // The demand where the points see it (their supports reach the halo)
     halo.copyToHalo({haloExchange::field(demand_)});
 
-    // Each surface node's sum of the weights of the points it takes from
-    weightSum_ = 0;
-    shapeWeights sw;
-    forAll(pts.x, p)
+    // f(node, N) for each node of the weights sw that has a demand (a
+    // node beyond a wall counts as the one it folds into)
+    auto forDemandNodes = [&](const shapeWeights& sw, auto&& f)
     {
-        mpm.nodeWeights(p, sw);
         sw.forEachNode
         (
             [&](label i, label j, label k, scalar N, const vector&)
@@ -311,10 +309,19 @@ void Foam::physicsEffects::erosion::erodeSurface()
                 const label node = walls.image(lattice.node(i, j, k));
                 if (demand_[node] > 0)
                 {
-                    weightSum_[node] += N;
+                    f(node, N);
                 }
             }
         );
+    };
+
+    // Each surface node's sum of the weights of the points it takes from
+    weightSum_ = 0;
+    shapeWeights sw;
+    forAll(pts.x, p)
+    {
+        mpm.nodeWeights(p, sw);
+        forDemandNodes(sw, [&](label node, scalar N){ weightSum_[node] += N; });
     }
     if (parallel)
     {
@@ -327,12 +334,12 @@ void Foam::physicsEffects::erosion::erodeSurface()
     auto forEachShare = [&](const label p, auto&& f)
     {
         mpm.nodeWeights(p, sw);
-        sw.forEachNode
+        forDemandNodes
         (
-            [&](label i, label j, label k, scalar N, const vector&)
+            sw,
+            [&](label node, scalar N)
             {
-                const label node = walls.image(lattice.node(i, j, k));
-                if (demand_[node] > 0 && weightSum_[node] > 0)
+                if (weightSum_[node] > 0)
                 {
                     f(node, N/weightSum_[node]);
                 }
@@ -417,15 +424,12 @@ void Foam::physicsEffects::erosion::erodeSurface()
 
         scalar asked = 0;
         mpm.nodeWeights(p, sw);
-        sw.forEachNode
+        forDemandNodes
         (
-            [&](label i, label j, label k, scalar N, const vector&)
+            sw,
+            [&](label node, scalar N)
             {
-                const label node = walls.image(lattice.node(i, j, k));
-                if (demand_[node] > 0)
-                {
-                    asked += demand_[node]*weightSum_[node]*N;
-                }
+                asked += demand_[node]*weightSum_[node]*N;
             }
         );
         if (!(asked > 0))
@@ -439,16 +443,12 @@ void Foam::physicsEffects::erosion::erodeSurface()
         const bool goes = !(keep*pts.V0[p] >= removeVolume_);
         const scalar given = goes ? m : m - keep*m;
         const scalar scale = given/asked;
-        sw.forEachNode
+        forDemandNodes
         (
-            [&](label i, label j, label k, scalar N, const vector&)
+            sw,
+            [&](label node, scalar N)
             {
-                const label node = walls.image(lattice.node(i, j, k));
-                if (demand_[node] > 0)
-                {
-                    source_[node] +=
-                        scale*demand_[node]*weightSum_[node]*N/Vcell;
-                }
+                source_[node] += scale*demand_[node]*weightSum_[node]*N/Vcell;
             }
         );
         eroded_ += given;
