@@ -760,6 +760,10 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         startAtForceBalance();
     }
     halo_.exchangeSelected(f.data(), lattice_.nBox());
+    if (boundaries_->timeVarying())
+    {
+        boundaries_->update(units_, U_, p_);
+    }
     boundaries_->fill
     (
         f.data(),

@@ -21,6 +21,46 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::latticeBoltzmannFluid::wallForce
+(
+    const boolList& selectedPatches,
+    const point& CofR,
+    const scalar pRef,
+    vector& force,
+    vector& moment
+)
+{
+    // The halo's populations as the next step's pull reads them (a slip
+    // link takes its population from a neighbour); the next step
+    // exchanges the same values again
+    scalarList& f = current();
+    halo_.exchangeSelected(f.data(), lattice_.nBox());
+
+    vector P, M, Prest, Mrest;
+    boundaries_->wallMomentum
+    (
+        f.cdata(),
+        porosity_.size() ? porosity_.cdata() : nullptr,
+        selectedPatches,
+        CofR,
+        P,
+        M,
+        Prest,
+        Mrest
+    );
+    // Lattice momentum per step to newtons: rho0 V (dx/dt)/dt, V the
+    // volume of a node (the cell; a 2D mesh's thickness included)
+    const scalar rhoRef = units_.rhoLattice(pRef);
+    const scalar toN =
+        units_.rho0()*lattice_.cellVolume()*units_.velocityScale()
+       /units_.dt();
+    force = toN*(P - rhoRef*Prest);
+    moment = toN*(M - rhoRef*Mrest);
+    reduce(force, sumOp<vector>());
+    reduce(moment, sumOp<vector>());
+}
+
+
 void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
 {
     const label Q = velocitySet_->Q();

@@ -50,14 +50,18 @@ void Foam::lbmBoundaries::classifyPatches
     };
 
     const wordList wallTypes({"noSlip"});
-    const wordList movingTypes({"fixedValue", "movingWallVelocity"});
+    const wordList movingTypes
+        ({"fixedValue", "movingWallVelocity", "uniformFixedValue"});
     const wordList slipTypes({"slip"});
     const wordList openUTypes
         ({"zeroGradient", "inletOutlet", "pressureInletOutletVelocity"});
     const wordList closedPTypes({"zeroGradient", "fixedFluxPressure"});
-    const wordList openPTypes({"fixedValue"});
+    const wordList openPTypes({"fixedValue", "uniformFixedValue"});
+    // Values from a Function1 of time: set again at every step
+    const word varyingType("uniformFixedValue");
 
     patchKinds_.setSize(patches.size(), NONE);
+    varying_.setSize(patches.size(), false);
 
     forAll(patches, patchi)
     {
@@ -82,9 +86,10 @@ void Foam::lbmBoundaries::classifyPatches
                 << why << nl
                 << "    Allowed types here: " << allowed << nl
                 << "    Supported pairs (U / p): noSlip / zeroGradient,"
-                << " fixedValue or movingWallVelocity / zeroGradient,"
-                << " slip / zeroGradient, zeroGradient / fixedValue,"
-                << " cyclic / cyclic, empty / empty"
+                << " fixedValue, movingWallVelocity or uniformFixedValue"
+                << " / zeroGradient, slip / zeroGradient, zeroGradient"
+                << " / fixedValue or uniformFixedValue, cyclic / cyclic,"
+                << " empty / empty"
                 << exit(FatalIOError);
         };
 
@@ -95,6 +100,7 @@ void Foam::lbmBoundaries::classifyPatches
                 bad(U, Utype, openUTypes, "on a fixed-pressure patch");
             }
             patchKinds_[patchi] = PRESSURE;
+            varying_[patchi] = (ptype == varyingType);
             continue;
         }
 
@@ -111,8 +117,11 @@ void Foam::lbmBoundaries::classifyPatches
         }
         else if (movingTypes.found(Utype))
         {
+            // (a value that changes in time may start at rest)
+            varying_[patchi] = (Utype == varyingType);
             const bool moving =
-                returnReduce
+                varying_[patchi]
+             || returnReduce
                 (
                     max(mag(U.boundaryField()[patchi])) > 0,
                     orOp<bool>()
@@ -264,6 +273,9 @@ Foam::lbmBoundaries::lbmBoundaries
     DynamicList<scalar> copyValue;
     DynamicList<label> abbGhost, abbSource, abbNode, abbDir;
     DynamicList<scalar> abbRho;
+    DynamicList<label> copyPatch, abbPatch;
+    DynamicList<label> varyingCopy, varyingCopyPatch, varyingCopyFace;
+    DynamicList<label> varyingAbb, varyingAbbPatch, varyingAbbFace;
     patchLinks_.setSize(patches.size(), 0);
 
     auto offsetOf = [&stride](const labelVector& v)
@@ -289,6 +301,7 @@ Foam::lbmBoundaries::lbmBoundaries
             {
                 // No face found (a corner of missing cells): wall at rest
                 ++nUnclassified_;
+                copyPatch.append(-1);
                 copyGhost.append(ghost);
                 copySource.append(opp[q]*nBox + x);
                 copyValue.append(0);
@@ -303,6 +316,13 @@ Foam::lbmBoundaries::lbmBoundaries
             {
                 case PRESSURE:
                 {
+                    if (varying_[patchi])
+                    {
+                        varyingAbb.append(abbGhost.size());
+                        varyingAbbPatch.append(patchi);
+                        varyingAbbFace.append(patchFacei);
+                    }
+                    abbPatch.append(patchi);
                     abbGhost.append(ghost);
                     abbSource.append(opp[q]*nBox + x);
                     abbNode.append(x);
@@ -350,12 +370,14 @@ Foam::lbmBoundaries::lbmBoundaries
                         )
                     )
                     {
+                        copyPatch.append(patchi);
                         copyGhost.append(ghost);
                         copySource.append(qm*nBox + y);
                         copyValue.append(0);
                         break;
                     }
                     // No such node (a corner of missing cells): bounce back
+                    copyPatch.append(patchi);
                     copyGhost.append(ghost);
                     copySource.append(opp[q]*nBox + x);
                     copyValue.append(0);
@@ -369,6 +391,13 @@ Foam::lbmBoundaries::lbmBoundaries
                     );
                     const scalar cu =
                         c[q].x()*uw.x() + c[q].y()*uw.y() + c[q].z()*uw.z();
+                    if (varying_[patchi])
+                    {
+                        varyingCopy.append(copyGhost.size());
+                        varyingCopyPatch.append(patchi);
+                        varyingCopyFace.append(patchFacei);
+                    }
+                    copyPatch.append(patchi);
                     copyGhost.append(ghost);
                     copySource.append(opp[q]*nBox + x);
                     copyValue.append(6.0*w[q]*cu);
@@ -376,6 +405,7 @@ Foam::lbmBoundaries::lbmBoundaries
                 }
                 default:
                 {
+                    copyPatch.append(patchi);
                     copyGhost.append(ghost);
                     copySource.append(opp[q]*nBox + x);
                     copyValue.append(0);
@@ -385,6 +415,8 @@ Foam::lbmBoundaries::lbmBoundaries
     }
 
     copyGhost_.transfer(copyGhost);
+    copyPatch_.transfer(copyPatch);
+    abbPatch_.transfer(abbPatch);
     copySource_.transfer(copySource);
     copyValue_.transfer(copyValue);
     abbGhost_.transfer(abbGhost);
@@ -392,10 +424,111 @@ Foam::lbmBoundaries::lbmBoundaries
     abbNode_.transfer(abbNode);
     abbDir_.transfer(abbDir);
     abbRho_.transfer(abbRho);
+    varyingCopy_.transfer(varyingCopy);
+    varyingCopyPatch_.transfer(varyingCopyPatch);
+    varyingCopyFace_.transfer(varyingCopyFace);
+    varyingAbb_.transfer(varyingAbb);
+    varyingAbbPatch_.transfer(varyingAbbPatch);
+    varyingAbbFace_.transfer(varyingAbbFace);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+inline Foam::scalar Foam::lbmBoundaries::pressureLinkValue
+(
+    const scalar* f,
+    const scalar* porosity,
+    const label i
+) const
+{
+    // Pressure: non-equilibrium extrapolation (Guo, Zheng & Shi 2002,
+    // Chinese Physics 11, 366) in post-collision form. The wall node w one
+    // spacing beyond x gets the equilibrium at the density extrapolated
+    // linearly through the boundary value half-way, rho_w = 2 rho_b - rho_x,
+    // and the velocity of x, plus the post-collision non-equilibrium part
+    // of x:
+    //     f*_q(w) = f_q^eq(rho_w, u_x) + f*_q(x) - f_q^eq(rho_x, u_x)
+    // Unlike plain anti-bounce-back this keeps the viscous stress at the
+    // boundary, so the pressure is uniform across an inlet of a viscous flow.
+    const label nBox = lattice_.nBox();
+    const label Q = vs_.Q();
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+    const label x = abbNode_[i];
+    scalar rho = 0;
+    vector j(Zero);
+    for (label q = 0; q < Q; ++q)
+    {
+        const scalar fq = f[q*nBox + x];
+        rho += fq;
+        j += fq*vector(c[q]);
+    }
+    const vector u = j/rho;
+    const label q = abbDir_[i];
+    const scalar cu = vector(c[q]) & u;
+    const scalar shape = w[q]*(1.0 + 3.0*cu + 4.5*cu*cu - 1.5*magSqr(u));
+    // (porous flow: the pore pressure p is c_s^2 (rho - 1)/eps, so the
+    // density that holds p next to node x is 1 + eps (rho(p) - 1))
+    const scalar rhoB =
+        porosity ? 1.0 + porosity[x]*(abbRho_[i] - 1.0) : abbRho_[i];
+    const scalar rhoWall = 2.0*rhoB - rho;
+    return f[q*nBox + x] + (rhoWall - rho)*shape;
+}
+
+
+void Foam::lbmBoundaries::update
+(
+    const lbmUnits& units,
+    volVectorField& U,
+    volScalarField& p
+)
+{
+    // The patches' Function1 at the current time (every processor, also
+    // one with no link on them: the fields' patch values stay consistent)
+    forAll(varying_, patchi)
+    {
+        if (!varying_[patchi])
+        {
+            continue;
+        }
+        if (patchKinds_[patchi] == PRESSURE)
+        {
+            p.boundaryFieldRef()[patchi].evaluate();
+        }
+        else
+        {
+            U.boundaryFieldRef()[patchi].evaluate();
+        }
+    }
+
+    // Ladd's bounce-back term 6 w_q c_q.u_w of the wall velocity (as the
+    // constructor sets it), and the pressure links' density
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+    const label nBox = lattice_.nBox();
+    forAll(varyingCopy_, k)
+    {
+        const label i = varyingCopy_[k];
+        const vector uw = units.toLattice
+        (
+            U.boundaryField()[varyingCopyPatch_[k]][varyingCopyFace_[k]]
+        );
+        // (the link's direction is that of its wall slot)
+        const label q = copyGhost_[i]/nBox;
+        const scalar cu =
+            c[q].x()*uw.x() + c[q].y()*uw.y() + c[q].z()*uw.z();
+        copyValue_[i] = 6.0*w[q]*cu;
+    }
+    forAll(varyingAbb_, k)
+    {
+        abbRho_[varyingAbb_[k]] = units.rhoLattice
+        (
+            p.boundaryField()[varyingAbbPatch_[k]][varyingAbbFace_[k]]
+        );
+    }
+}
+
 
 void Foam::lbmBoundaries::fill(scalar* f, const scalar* porosity) const
 {
@@ -413,40 +546,102 @@ void Foam::lbmBoundaries::fill(scalar* f, const scalar* porosity) const
         return;
     }
 
-    // Pressure: non-equilibrium extrapolation (Guo, Zheng & Shi 2002,
-    // Chinese Physics 11, 366) in post-collision form. The wall node w one
-    // spacing beyond x gets the equilibrium at the density extrapolated
-    // linearly through the boundary value half-way, rho_w = 2 rho_b - rho_x,
-    // and the velocity of x, plus the post-collision non-equilibrium part
-    // of x:
-    //     f*_q(w) = f_q^eq(rho_w, u_x) + f*_q(x) - f_q^eq(rho_x, u_x)
-    // Unlike plain anti-bounce-back this keeps the viscous stress at the
-    // boundary, so the pressure is uniform across an inlet of a viscous flow.
-    const label nBox = lattice_.nBox();
-    const label Q = vs_.Q();
-    const List<labelVector>& c = vs_.c();
-    const scalarList& w = vs_.w();
     forAll(abbGhost_, i)
     {
-        const label x = abbNode_[i];
-        scalar rho = 0;
-        vector j(Zero);
-        for (label q = 0; q < Q; ++q)
+        f[abbGhost_[i]] = pressureLinkValue(f, porosity, i);
+    }
+}
+
+
+void Foam::lbmBoundaries::wallMomentum
+(
+    const scalar* f,
+    const scalar* porosity,
+    const boolList& selected,
+    const point& CofR,
+    vector& P,
+    vector& M,
+    vector& Prest,
+    vector& Mrest
+) const
+{
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+    const labelList& opp = vs_.opp();
+    const labelVector& stride = lattice_.stride();
+    const vectorField& C = lattice_.mesh().C();
+    const labelList& nodeCell = lattice_.nodeCell();
+    const List<unsigned char>& kind = lattice_.kind();
+    const List<FixedList<label, 6>>& cellFace = lattice_.cellBoundaryFace();
+    const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();
+    const scalar dx = lattice_.dx();
+
+    P = Zero;
+    M = Zero;
+    Prest = Zero;
+    Mrest = Zero;
+
+    // One link: the wall slot (direction q, node s beyond the wall), the
+    // population fIn it holds, the patch of the face it crosses. A link
+    // across an edge or a corner crosses a face in each axis it leaves
+    // the water by: each such component of its momentum goes to the patch
+    // of that face (the bottom of a tank gets the vertical share of the
+    // corner's diagonal links, the side wall their horizontal one); the
+    // components along the wall go to the face the link was classified by
+    // (the shear on it)
+    auto add = [&](const label ghost, const scalar fIn, const label patchi)
+    {
+        const label q = ghost/nBox;
+        const label s = ghost - q*nBox;
+        const labelVector& cq = c[q];
+        const label x =
+            s + cq.x()*stride.x() + cq.y()*stride.y() + cq.z()*stride.z();
+        vector dP(Zero);
+        vector dPrest(Zero);
+        bool any = false;
+        for (direction a = 0; a < 3; ++a)
         {
-            const scalar fq = f[q*nBox + x];
-            rho += fq;
-            j += fq*vector(c[q]);
+            const label out = -cq[a];
+            if (out == 0)
+            {
+                continue;
+            }
+            label patcha = patchi;
+            if (kind[x + out*stride[a]] == latticeMesh::WALL)
+            {
+                const label facei =
+                    cellFace[nodeCell[x]][2*a + (out > 0 ? 1 : 0)];
+                if (facei >= 0)
+                {
+                    patcha = patches.whichPatch(facei);
+                }
+            }
+            if (patcha >= 0 && selected[patcha])
+            {
+                // (at rest, density 1: both populations are w_q)
+                dP[a] = (f[opp[q]*nBox + x] + fIn)*out;
+                dPrest[a] = 2.0*w[q]*out;
+                any = true;
+            }
         }
-        const vector u = j/rho;
-        const label q = abbDir_[i];
-        const scalar cu = vector(c[q]) & u;
-        const scalar shape = w[q]*(1.0 + 3.0*cu + 4.5*cu*cu - 1.5*magSqr(u));
-        // (porous flow: the pore pressure p is c_s^2 (rho - 1)/eps, so the
-        // density that holds p next to node x is 1 + eps (rho(p) - 1))
-        const scalar rhoB =
-            porosity ? 1.0 + porosity[x]*(abbRho_[i] - 1.0) : abbRho_[i];
-        const scalar rhoWall = 2.0*rhoB - rho;
-        f[abbGhost_[i]] = f[q*nBox + x] + (rhoWall - rho)*shape;
+        if (any)
+        {
+            const point r = C[nodeCell[x]] - 0.5*dx*vector(cq);
+            P += dP;
+            M += (r - CofR) ^ dP;
+            Prest += dPrest;
+            Mrest += (r - CofR) ^ dPrest;
+        }
+    };
+
+    forAll(copyGhost_, i)
+    {
+        add(copyGhost_[i], f[copySource_[i]] + copyValue_[i], copyPatch_[i]);
+    }
+    forAll(abbGhost_, i)
+    {
+        add(abbGhost_[i], pressureLinkValue(f, porosity, i), abbPatch_[i]);
     }
 }
 
@@ -500,7 +695,8 @@ void Foam::lbmBoundaries::report(Ostream& os) const
         }
         os  << "    " << patches[patchi].name() << ": "
             << patchKindNames[patchKinds_[patchi]] << " (" << links[patchi]
-            << " links)" << nl;
+            << " links" << (varying_[patchi] ? ", value in time" : "")
+            << ")" << nl;
     }
     const label nUn = returnReduce(nUnclassified_, sumOp<label>());
     if (nUn)

@@ -949,50 +949,70 @@ Foam::scalar Foam::materialPointSoil::kineticEnergy() const
 }
 
 
-void Foam::materialPointSoil::write()
+void Foam::materialPointSoil::updateFields()
 {
-    points_.write(mesh_, lattice_);
-
     // Nodal fields, as the couplings see them: the solid volume fraction
-    // phi and the soil's velocity
+    // phi and the soil's velocity. (The node masses of the step's own
+    // nodalFields are kept: addNodeForces shares forces by them, and a
+    // refresh for a function object must not change the run.)
     scalarList phi;
     List<vector> vel;
+    scalarList stepNodeMass(nodeMass_);
     nodalFields(phi, vel);
+    nodeMass_.transfer(stepNodeMass);
 
-    volScalarField alpha
-    (
-        IOobject
+    if (!soilFraction_.valid())
+    {
+        // Registered and written with the other fields at write times
+        soilFraction_.reset
         (
-            "soilFraction",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE
-        ),
-        mesh_,
-        dimensionedScalar(dimless, Zero)
-    );
-    volVectorField Us
-    (
-        IOobject
+            new volScalarField
+            (
+                IOobject
+                (
+                    "soilFraction",
+                    mesh_.time().timeName(),
+                    mesh_,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh_,
+                dimensionedScalar(dimless, Zero)
+            )
+        );
+        Usoil_.reset
         (
-            "Usoil",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE
-        ),
-        mesh_,
-        dimensionedVector(dimVelocity, Zero)
-    );
+            new volVectorField
+            (
+                IOobject
+                (
+                    "Usoil",
+                    mesh_.time().timeName(),
+                    mesh_,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh_,
+                dimensionedVector(dimVelocity, Zero)
+            )
+        );
+    }
+    scalarField& alpha = soilFraction_->primitiveFieldRef();
+    vectorField& Us = Usoil_->primitiveFieldRef();
     forAll(lattice_.cellNode(), celli)
     {
         const label n = lattice_.cellNode()[celli];
         alpha[celli] = phi[n];
         Us[celli] = vel[n];
     }
-    alpha.write();
-    Us.write();
+    soilFraction_->correctBoundaryConditions();
+    Usoil_->correctBoundaryConditions();
+}
+
+
+void Foam::materialPointSoil::write()
+{
+    points_.write(mesh_, lattice_);
 }
 
 

@@ -14,6 +14,9 @@ License
 #include "physicsScene.H"
 #include "caseChecks.H"
 #include "Time.H"
+#include "functionObjectList.H"
+#include "timeControlFunctionObject.H"
+#include "HashSet.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -21,6 +24,8 @@ namespace Foam
 {
     defineTypeNameAndDebug(physicsScene, 0);
 }
+
+const Foam::word Foam::physicsScene::registryName("physicsScene");
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -166,6 +171,17 @@ void Foam::physicsScene::progress()
 
 Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
 :
+    regIOobject
+    (
+        IOobject
+        (
+            registryName,
+            runTime.timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        )
+    ),
     runTime_(runTime),
     mesh_(mesh),
     dict_
@@ -181,6 +197,7 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
     ),
     names_(dict_.get<wordList>("effects")),
     writeTime_(0),
+    fieldTime_(0),
     progressInterval_(dict_.getOrDefault<scalar>("progressInterval", 10)),
     nSteps_(0),
     nStepsTotal_(0),
@@ -303,10 +320,57 @@ void Foam::physicsScene::evolve()
 }
 
 
+bool Foam::physicsScene::functionObjectsReadFields() const
+{
+    const functionObjectList& objects = runTime_.functionObjects();
+    if (!objects.status())
+    {
+        return false;
+    }
+    // The project's own function objects read the lattice and the points
+    static const wordHashSet ownTypes
+    ({
+        "latticeForces",
+        "materialPointProbes"
+    });
+    forAll(objects, i)
+    {
+        // (an object with time controls is wrapped in a timeControl)
+        const functionObject* fo = &objects[i];
+        if (isA<functionObjects::timeControl>(*fo))
+        {
+            fo = &refCast<const functionObjects::timeControl>(*fo).filter();
+        }
+        if (!ownTypes.found(fo->type()))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+void Foam::physicsScene::updateFields()
+{
+    forAll(effects_, i)
+    {
+        effects_[i].updateFields();
+    }
+}
+
+
 void Foam::physicsScene::write()
 {
     if (!runTime_.writeTime())
     {
+        // Function objects execute after this, in Time::run: they read the
+        // fields of this step (the cost paid only when one reads them)
+        if (functionObjectsReadFields())
+        {
+            const clockValue t0(clockValue::now());
+            updateFields();
+            fieldTime_ += t0.elapsed();
+        }
         return;
     }
     // The effects' outputs, then the registered fields (U, p, rho, ...):
@@ -320,6 +384,7 @@ void Foam::physicsScene::write()
     (
         [&]()
         {
+            updateFields();
             forAll(effects_, i)
             {
                 effects_[i].write();
@@ -384,7 +449,13 @@ void Foam::physicsScene::summary() const
         }
         Info<< nl;
     }
-    Info<< "    writing: " << writeTime_ << " s" << nl << endl;
+    Info<< "    writing: " << writeTime_ << " s" << nl;
+    if (fieldTime_ > 0)
+    {
+        Info<< "    fields for function objects: " << fieldTime_ << " s ("
+            << label(100*fieldTime_/max(wall, VSMALL) + 0.5) << "%)" << nl;
+    }
+    Info<< endl;
 }
 
 

@@ -499,8 +499,13 @@ void Foam::physicsEffects::erosion::write()
                 << "Could not write " << os.name() << exit(FatalError);
         }
     }
-    suspension_.updateField(porosity());
     suspension_.writePopulations();
+}
+
+
+void Foam::physicsEffects::erosion::updateFields()
+{
+    suspension_.updateField(porosity());
 }
 
 

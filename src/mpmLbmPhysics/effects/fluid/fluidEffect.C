@@ -57,9 +57,14 @@ Foam::string Foam::physicsEffects::fluid::plan() const
 }
 
 
-void Foam::physicsEffects::fluid::write()
+void Foam::physicsEffects::fluid::updateFields()
 {
     lbm_.updateFields();
+}
+
+
+void Foam::physicsEffects::fluid::write()
+{
     lbm_.writePopulations();
     if (lbm_.writesViscousStress())
     {

@@ -184,9 +184,14 @@ Foam::string Foam::physicsEffects::scalarTransport::plan() const
 }
 
 
-void Foam::physicsEffects::scalarTransport::write()
+void Foam::physicsEffects::scalarTransport::updateFields()
 {
     transport_.updateField(porosity());
+}
+
+
+void Foam::physicsEffects::scalarTransport::write()
+{
     transport_.writePopulations();
 }
 

@@ -70,6 +70,12 @@ void Foam::physicsEffects::soil::evolve(const sceneStage)
 }
 
 
+void Foam::physicsEffects::soil::updateFields()
+{
+    mpm_.updateFields();
+}
+
+
 void Foam::physicsEffects::soil::write()
 {
     mpm_.write();

@@ -1,0 +1,49 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "mpmLbmFunctionObjectScene.H"
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+Foam::physicsScene& Foam::mpmLbmScene
+(
+    const fvMesh& mesh,
+    const word& functionObjectType,
+    const word& functionObjectName,
+    const word& needs
+)
+{
+    if (!mesh.foundObject<physicsScene>(physicsScene::registryName))
+    {
+        FatalErrorInFunction
+            << "Function object " << functionObjectName << " (type "
+            << functionObjectType << ") reads the lattice and the material"
+            << " points of the running solver mpmLbmFoam: run it in the"
+            << " case's controlDict functions, not with postProcess"
+            << exit(FatalError);
+    }
+    physicsScene& scene =
+        mesh.lookupObjectRef<physicsScene>(physicsScene::registryName);
+    if (!scene.has(needs))
+    {
+        FatalIOErrorInFunction(scene.dict())
+            << "Function object " << functionObjectName << " (type "
+            << functionObjectType << ") needs the effect " << needs
+            << ", which this scene does not select: effects "
+            << scene.dict().get<wordList>("effects") << exit(FatalIOError);
+    }
+    return scene;
+}
+
+
+// ************************************************************************* //
