@@ -21,6 +21,21 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::latticeBoltzmannFluid::nodePressure(const label n) const
+{
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const scalarList& f = current();
+    scalar rho = 0;
+    for (label q = 0; q < Q; ++q)
+    {
+        rho += f[q*nBox + n];
+    }
+    const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
+    return units_.pressure(rho)/eps;
+}
+
+
 void Foam::latticeBoltzmannFluid::wallForce
 (
     const boolList& selectedPatches,
