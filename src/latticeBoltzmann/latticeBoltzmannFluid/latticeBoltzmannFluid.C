@@ -12,6 +12,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "latticeBoltzmannFluid.H"
+#include "IFstream.H"
+#include "OFstream.H"
 #include "nodeFieldIO.H"
 #include "selectEntry.H"
 #include "caseChecks.H"
@@ -24,6 +26,8 @@ namespace Foam
 {
     defineTypeNameAndDebug(latticeBoltzmannFluid, 0);
 }
+
+const Foam::word Foam::latticeBoltzmannFluid::outletStateFile("lbmOutletState");
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -187,6 +191,32 @@ void Foam::latticeBoltzmannFluid::initialise()
             writtenPorosity_.setSize(nBox, 1.0);
             readNodeField(lattice_, "lbmPorosity", writtenPorosity_.data());
         }
+
+        // Outlets that let waves leave: their boundary pressures
+        if (boundaries_->hasAbsorbing())
+        {
+            const fileName file
+            (
+                runTime.timePath()/"uniform"/outletStateFile
+            );
+            if (isFile(file))
+            {
+                IFstream is(file);
+                const dictionary state(is);
+                const scalarList rho(state.get<scalarList>("rho"));
+                if (rho.size() != boundaries_->absorbingState().size())
+                {
+                    FatalIOErrorInFunction(state)
+                        << "rho in " << file << " has " << rho.size()
+                        << " values, the outlets' links here "
+                        << boundaries_->absorbingState().size() << ": it was"
+                        << " written with another mesh or decomposition."
+                        << nl << "    Remove it to start the outlets from"
+                        << " their patch values of p" << exit(FatalIOError);
+                }
+                boundaries_->setAbsorbingState(rho);
+            }
+        }
     }
     else
     {
@@ -213,6 +243,10 @@ void Foam::latticeBoltzmannFluid::initialise()
     scalar mass = 0;
     for (const label n : cellNode)
     {
+        if (obstacles_->solid(n))
+        {
+            continue;
+        }
         for (label q = 0; q < Q; ++q)
         {
             mass += f[q*nBox + n];
@@ -233,6 +267,10 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
     forAll(cellNode, celli)
     {
         const label n = cellNode[celli];
+        if (obstacles_->solid(n))
+        {
+            continue;
+        }
         scalar rho = 0;
         vector j(Zero);
         for (label q = 0; q < Q; ++q)
@@ -532,9 +570,14 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         halo_.setComponents(needed);
     }
 
+    obstacles_.reset(new lbmObstacles(lattice_, dict_));
+    obstacles_->report(Info);
     boundaries_.reset
     (
-        new lbmBoundaries(lattice_, velocitySet_(), units_, U_, p_)
+        new lbmBoundaries
+        (
+            lattice_, velocitySet_(), units_, U_, p_, obstacles_()
+        )
     );
     boundaries_->report(Info);
 
@@ -762,7 +805,7 @@ void Foam::latticeBoltzmannFluid::prepareStream()
     halo_.exchangeSelected(f.data(), lattice_.nBox());
     if (boundaries_->timeVarying())
     {
-        boundaries_->update(units_, U_, p_);
+        boundaries_->update(units_, U_, p_, f.cdata());
     }
     boundaries_->fill
     (
@@ -819,8 +862,10 @@ void Foam::latticeBoltzmannFluid::step()
     a.fNew = next().data();
     a.nBox = nBox;
     a.offset = offset_.cdata();
-    a.runs = reinterpret_cast<const label (*)[2]>(lattice_.runs().cdata());
-    a.nRuns = lattice_.runs().size();
+    // (the water's runs: without the nodes inside bodies)
+    const List<latticeMesh::nodeRun>& runs = obstacles_->runs();
+    a.runs = reinterpret_cast<const label (*)[2]>(runs.cdata());
+    a.nRuns = runs.size();
     const vector g = units_.accelerationToLattice(bodyAcceleration_);
     a.g[0] = g.x();
     a.g[1] = g.y();

@@ -18,6 +18,7 @@ Description
 
 #include "latticeBoltzmannFluid.H"
 #include "nodeFieldIO.H"
+#include "OFstream.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -39,6 +40,7 @@ Foam::scalar Foam::latticeBoltzmannFluid::nodePressure(const label n) const
 void Foam::latticeBoltzmannFluid::wallForce
 (
     const boolList& selectedPatches,
+    const boolList& selectedBodies,
     const point& CofR,
     const scalar pRef,
     vector& force,
@@ -57,6 +59,7 @@ void Foam::latticeBoltzmannFluid::wallForce
         f.cdata(),
         porosity_.size() ? porosity_.cdata() : nullptr,
         selectedPatches,
+        selectedBodies,
         CofR,
         P,
         M,
@@ -100,6 +103,10 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
     sigma = Zero;
     for (const label n : lattice_.cellNode())
     {
+        if (obstacles_->solid(n))
+        {
+            continue;
+        }
         scalar rho = 0;
         vector j(Zero);
         for (label q = 0; q < Q; ++q)
@@ -195,6 +202,14 @@ void Foam::latticeBoltzmannFluid::updateFields()
     forAll(cellNode, celli)
     {
         const label n = cellNode[celli];
+        if (obstacles_->solid(n))
+        {
+            // Inside a body: no water
+            U[celli] = Zero;
+            p[celli] = 0;
+            rhoPhys[celli] = units_.rho0();
+            continue;
+        }
         scalar rho = 0;
         vector j(Zero);
         for (label q = 0; q < Q; ++q)
@@ -214,7 +229,41 @@ void Foam::latticeBoltzmannFluid::updateFields()
     }
 
     U_.correctBoundaryConditions();
-    p_.correctBoundaryConditions();
+    if (boundaries_->hasAbsorbing())
+    {
+        // OpenFOAM's advective is not evaluated (it would need a flux
+        // field): the patches take the lattice's boundary pressure
+        const boolList& absorbing = boundaries_->absorbingPatches();
+        volScalarField::Boundary& bf = p_.boundaryFieldRef();
+        const label nReq = UPstream::nRequests();
+        forAll(bf, patchi)
+        {
+            if (!absorbing[patchi])
+            {
+                bf[patchi].initEvaluate(Pstream::defaultCommsType);
+            }
+        }
+        if
+        (
+            Pstream::parRun()
+         && Pstream::defaultCommsType == Pstream::commsTypes::nonBlocking
+        )
+        {
+            UPstream::waitRequests(nReq);
+        }
+        forAll(bf, patchi)
+        {
+            if (!absorbing[patchi])
+            {
+                bf[patchi].evaluate(Pstream::defaultCommsType);
+            }
+        }
+        boundaries_->setAbsorbingValues(units_, p_);
+    }
+    else
+    {
+        p_.correctBoundaryConditions();
+    }
     rho_.correctBoundaryConditions();
 }
 
@@ -234,6 +283,10 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
     u = Zero;
     for (const label n : lattice_.cellNode())
     {
+        if (obstacles_->solid(n))
+        {
+            continue;
+        }
         scalar rho = 0;
         vector j(Zero);
         for (label q = 0; q < Q; ++q)
@@ -259,6 +312,11 @@ Foam::scalar Foam::latticeBoltzmannFluid::populationSum() const
     scalar sum = 0;
     for (const label n : lattice_.cellNode())
     {
+        if (obstacles_->solid(n))
+        {
+            // (a body's slots hold its walls' returning populations)
+            continue;
+        }
         for (label q = 0; q < Q; ++q)
         {
             sum += f[q*nBox + n];
@@ -279,6 +337,10 @@ Foam::wordList Foam::latticeBoltzmannFluid::populationFiles() const
     if (displacement_)
     {
         names.append("lbmPorosity");
+    }
+    if (boundaries_->hasAbsorbing())
+    {
+        names.append("uniform"/outletStateFile);
     }
     return names;
 }
@@ -304,6 +366,24 @@ void Foam::latticeBoltzmannFluid::writePopulations() const
             "lbmPorosity",
             (heldPorosity_.size() ? heldPorosity_ : porosity_).cdata()
         );
+    }
+
+    if (boundaries_->hasAbsorbing())
+    {
+        // (every processor writes its own: a processor with no outlet link
+        // an empty list)
+        const fileName dir(mesh_.time().timePath()/"uniform");
+        mkDir(dir);
+        OFstream os(dir/outletStateFile);
+        os.precision(17);
+        os  << "// Boundary densities (lattice units) of the pressure links of"
+            << " outlets that let waves leave" << nl
+            << "rho " << boundaries_->absorbingState() << ";" << nl;
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "Could not write " << os.name() << exit(FatalError);
+        }
     }
 }
 

@@ -16,6 +16,7 @@ License
 #include "DynamicList.H"
 #include "emptyPolyPatch.H"
 #include "wordRes.H"
+#include "advectiveFvPatchFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -35,7 +36,8 @@ Foam::lbmBoundaries::patchKindNames
 void Foam::lbmBoundaries::classifyPatches
 (
     const volVectorField& U,
-    const volScalarField& p
+    const volScalarField& p,
+    const lbmUnits& units
 )
 {
     const fvMesh& mesh = lattice_.mesh();
@@ -51,17 +53,23 @@ void Foam::lbmBoundaries::classifyPatches
 
     const wordList wallTypes({"noSlip"});
     const wordList movingTypes
-        ({"fixedValue", "movingWallVelocity", "uniformFixedValue"});
+    ({
+        "fixedValue", "movingWallVelocity", "uniformFixedValue",
+        "fixedProfile"
+    });
     const wordList slipTypes({"slip"});
     const wordList openUTypes
         ({"zeroGradient", "inletOutlet", "pressureInletOutletVelocity"});
     const wordList closedPTypes({"zeroGradient", "fixedFluxPressure"});
-    const wordList openPTypes({"fixedValue", "uniformFixedValue"});
+    const wordList openPTypes({"fixedValue", "uniformFixedValue", "advective"});
     // Values from a Function1 of time: set again at every step
     const word varyingType("uniformFixedValue");
 
     patchKinds_.setSize(patches.size(), NONE);
     varying_.setSize(patches.size(), false);
+    absorbing_.setSize(patches.size(), false);
+    absorbRhoInf_.setSize(patches.size(), 1.0);
+    absorbRelax_.setSize(patches.size(), 0.0);
 
     forAll(patches, patchi)
     {
@@ -86,8 +94,8 @@ void Foam::lbmBoundaries::classifyPatches
                 << why << nl
                 << "    Allowed types here: " << allowed << nl
                 << "    Supported pairs (U / p): noSlip / zeroGradient,"
-                << " fixedValue, movingWallVelocity or uniformFixedValue"
-                << " / zeroGradient, slip / zeroGradient, zeroGradient"
+                << " fixedValue, movingWallVelocity, uniformFixedValue or"
+                << " fixedProfile / zeroGradient, slip / zeroGradient, zeroGradient"
                 << " / fixedValue or uniformFixedValue, cyclic / cyclic,"
                 << " empty / empty"
                 << exit(FatalIOError);
@@ -101,6 +109,33 @@ void Foam::lbmBoundaries::classifyPatches
             }
             patchKinds_[patchi] = PRESSURE;
             varying_[patchi] = (ptype == varyingType);
+            if (ptype == "advective")
+            {
+                // The outlet relaxes to fieldInf over lInf: both needed
+                const auto& adv =
+                    refCast<const advectiveFvPatchField<scalar>>
+                    (
+                        p.boundaryField()[patchi]
+                    );
+                if (!(adv.lInf() > 0) || !std::isfinite(adv.lInf()))
+                {
+                    autoPtr<dictionary> d = fieldDict(mesh, p);
+                    FatalIOErrorInFunction
+                    (
+                        d->subDict("boundaryField").subDict(pp.name())
+                    )
+                        << "Patch " << pp.name() << ": p advective (an"
+                        << " outlet that lets waves leave) needs lInf, the"
+                        << " distance [m] over which it relaxes to the"
+                        << " pressure fieldInf beyond it, e.g. fieldInf 0;"
+                        << " lInf 1; (lInf > 0; a few channel widths)"
+                        << exit(FatalIOError);
+                }
+                absorbing_[patchi] = true;
+                absorbRhoInf_[patchi] = units.rhoLattice(adv.fieldInf());
+                absorbRelax_[patchi] =
+                    lattice_.dx()/(std::sqrt(3.0)*adv.lInf());
+            }
             continue;
         }
 
@@ -250,14 +285,15 @@ Foam::lbmBoundaries::lbmBoundaries
     const velocitySet& vs,
     const lbmUnits& units,
     const volVectorField& U,
-    const volScalarField& p
+    const volScalarField& p,
+    const lbmObstacles& obstacles
 )
 :
     lattice_(lattice),
     vs_(vs),
     nUnclassified_(0)
 {
-    classifyPatches(U, p);
+    classifyPatches(U, p, units);
 
     const fvMesh& mesh = lattice_.mesh();
     const polyBoundaryMesh& patches = mesh.boundaryMesh();
@@ -274,8 +310,11 @@ Foam::lbmBoundaries::lbmBoundaries
     DynamicList<label> abbGhost, abbSource, abbNode, abbDir;
     DynamicList<scalar> abbRho;
     DynamicList<label> copyPatch, abbPatch;
+    DynamicList<label> bodyGhost, bodyA, bodyB, bodyOf;
+    DynamicList<scalar> bodyWa, bodyWb, bodyFraction;
     DynamicList<label> varyingCopy, varyingCopyPatch, varyingCopyFace;
     DynamicList<label> varyingAbb, varyingAbbPatch, varyingAbbFace;
+    DynamicList<label> absorbAbb, absorbFace;
     patchLinks_.setSize(patches.size(), 0);
 
     auto offsetOf = [&stride](const labelVector& v)
@@ -285,9 +324,48 @@ Foam::lbmBoundaries::lbmBoundaries
 
     for (const label x : lattice_.cellNode())
     {
+        if (obstacles.solid(x))
+        {
+            continue;
+        }
         for (label q = 1; q < Q; ++q)
         {
             const label s = x - offsetOf(c[q]);
+            if (kind[s] != latticeMesh::WALL && obstacles.solid(s))
+            {
+                // Into a body: Bouzidi, Firdaouss & Lallemand 2001 (linear),
+                // i = opp(q) the direction from x into the body, y = x - c_i
+                // the water node behind x
+                const label i = opp[q];
+                const scalar qw = obstacles.wallFraction(x, s);
+                const label y = x + offsetOf(c[q]);
+                const bool behind =
+                    kind[y] != latticeMesh::WALL && !obstacles.solid(y);
+                bodyGhost.append(q*nBox + s);
+                bodyA.append(i*nBox + x);
+                if (qw < 0.5 && behind)
+                {
+                    bodyWa.append(2*qw);
+                    bodyB.append(i*nBox + y);
+                    bodyWb.append(1 - 2*qw);
+                }
+                else if (qw >= 0.5)
+                {
+                    bodyWa.append(0.5/qw);
+                    bodyB.append(q*nBox + x);
+                    bodyWb.append((2*qw - 1)/(2*qw));
+                }
+                else
+                {
+                    // (no water behind x: half-way bounce-back)
+                    bodyWa.append(1);
+                    bodyB.append(i*nBox + x);
+                    bodyWb.append(0);
+                }
+                bodyOf.append(obstacles.body(s));
+                bodyFraction.append(qw);
+                continue;
+            }
             if (kind[s] != latticeMesh::WALL)
             {
                 continue;
@@ -321,6 +399,11 @@ Foam::lbmBoundaries::lbmBoundaries
                         varyingAbb.append(abbGhost.size());
                         varyingAbbPatch.append(patchi);
                         varyingAbbFace.append(patchFacei);
+                    }
+                    if (absorbing_[patchi])
+                    {
+                        absorbAbb.append(abbGhost.size());
+                        absorbFace.append(patchFacei);
                     }
                     abbPatch.append(patchi);
                     abbGhost.append(ghost);
@@ -417,6 +500,13 @@ Foam::lbmBoundaries::lbmBoundaries
     copyGhost_.transfer(copyGhost);
     copyPatch_.transfer(copyPatch);
     abbPatch_.transfer(abbPatch);
+    bodyGhost_.transfer(bodyGhost);
+    bodySourceA_.transfer(bodyA);
+    bodySourceB_.transfer(bodyB);
+    bodyWeightA_.transfer(bodyWa);
+    bodyWeightB_.transfer(bodyWb);
+    bodyOf_.transfer(bodyOf);
+    bodyFraction_.transfer(bodyFraction);
     copySource_.transfer(copySource);
     copyValue_.transfer(copyValue);
     abbGhost_.transfer(abbGhost);
@@ -430,6 +520,8 @@ Foam::lbmBoundaries::lbmBoundaries
     varyingAbb_.transfer(varyingAbb);
     varyingAbbPatch_.transfer(varyingAbbPatch);
     varyingAbbFace_.transfer(varyingAbbFace);
+    absorbAbb_.transfer(absorbAbb);
+    absorbFace_.transfer(absorbFace);
 }
 
 
@@ -481,7 +573,8 @@ void Foam::lbmBoundaries::update
 (
     const lbmUnits& units,
     volVectorField& U,
-    volScalarField& p
+    volScalarField& p,
+    const scalar* f
 )
 {
     // The patches' Function1 at the current time (every processor, also
@@ -527,6 +620,62 @@ void Foam::lbmBoundaries::update
             p.boundaryField()[varyingAbbPatch_[k]][varyingAbbFace_[k]]
         );
     }
+
+    // Outlets that let waves leave: the boundary density advected out at
+    // the lattice's speed of sound from the node's, relaxed to fieldInf,
+    // implicit in time (the header gives the equation)
+    const scalar k2c = 2.0/std::sqrt(3.0);
+    const label Q = vs_.Q();
+    forAll(absorbAbb_, k)
+    {
+        const label i = absorbAbb_[k];
+        const label x = abbNode_[i];
+        scalar rhoX = 0;
+        for (label q = 0; q < Q; ++q)
+        {
+            rhoX += f[q*nBox + x];
+        }
+        const label patchi = abbPatch_[i];
+        const scalar m = absorbRelax_[patchi];
+        abbRho_[i] =
+            (abbRho_[i] + k2c*rhoX + m*absorbRhoInf_[patchi])
+           /(1 + k2c + m);
+    }
+}
+
+
+void Foam::lbmBoundaries::setAbsorbingValues
+(
+    const lbmUnits& units,
+    volScalarField& p
+) const
+{
+    forAll(absorbAbb_, k)
+    {
+        const label i = absorbAbb_[k];
+        scalarField& pf = p.boundaryFieldRef()[abbPatch_[i]];
+        pf[absorbFace_[k]] = units.pressure(abbRho_[i]);
+    }
+}
+
+
+Foam::scalarList Foam::lbmBoundaries::absorbingState() const
+{
+    scalarList rho(absorbAbb_.size());
+    forAll(absorbAbb_, k)
+    {
+        rho[k] = abbRho_[absorbAbb_[k]];
+    }
+    return rho;
+}
+
+
+void Foam::lbmBoundaries::setAbsorbingState(const scalarList& rho)
+{
+    forAll(absorbAbb_, k)
+    {
+        abbRho_[absorbAbb_[k]] = rho[k];
+    }
 }
 
 
@@ -539,6 +688,15 @@ void Foam::lbmBoundaries::fill(scalar* f, const scalar* porosity) const
     for (label i = 0; i < n; ++i)
     {
         f[ghost[i]] = f[src[i]] + val[i];
+    }
+
+    // Into bodies (their sources are water nodes' populations, never a
+    // wall slot)
+    forAll(bodyGhost_, i)
+    {
+        f[bodyGhost_[i]] =
+            bodyWeightA_[i]*f[bodySourceA_[i]]
+          + bodyWeightB_[i]*f[bodySourceB_[i]];
     }
 
     if (abbGhost_.empty())
@@ -558,6 +716,7 @@ void Foam::lbmBoundaries::wallMomentum
     const scalar* f,
     const scalar* porosity,
     const boolList& selected,
+    const boolList& selectedBodies,
     const point& CofR,
     vector& P,
     vector& M,
@@ -643,6 +802,34 @@ void Foam::lbmBoundaries::wallMomentum
     {
         add(abbGhost_[i], pressureLinkValue(f, porosity, i), abbPatch_[i]);
     }
+
+    // Into bodies: F = sum c_i [f*_i(x) + f_-i(x, t + 1)] (Ladd 1994; Mei
+    // et al. 2002; with interpolated bounce-back as Caiazzo & Junk 2008
+    // do), at the point where the link meets the surface
+    forAll(bodyGhost_, k)
+    {
+        if (!selectedBodies.size() || !selectedBodies[bodyOf_[k]])
+        {
+            continue;
+        }
+        const label ghost = bodyGhost_[k];
+        const label q = ghost/nBox;
+        const label s = ghost - q*nBox;
+        const labelVector& cq = c[q];
+        const label x =
+            s + cq.x()*stride.x() + cq.y()*stride.y() + cq.z()*stride.z();
+        const vector cOut(-vector(cq));
+        const scalar fIn =
+            bodyWeightA_[k]*f[bodySourceA_[k]]
+          + bodyWeightB_[k]*f[bodySourceB_[k]];
+        const vector dP = (f[bodySourceA_[k]] + fIn)*cOut;
+        const vector dPrest = 2.0*w[q]*cOut;
+        const point r = C[nodeCell[x]] + bodyFraction_[k]*dx*cOut;
+        P += dP;
+        M += (r - CofR) ^ dP;
+        Prest += dPrest;
+        Mrest += (r - CofR) ^ dPrest;
+    }
 }
 
 
@@ -651,6 +838,12 @@ void Foam::lbmBoundaries::fillHomogeneous(scalar* f) const
     forAll(copyGhost_, i)
     {
         f[copyGhost_[i]] = f[copySource_[i]];
+    }
+    forAll(bodyGhost_, i)
+    {
+        f[bodyGhost_[i]] =
+            bodyWeightA_[i]*f[bodySourceA_[i]]
+          + bodyWeightB_[i]*f[bodySourceB_[i]];
     }
     const label nBox = lattice_.nBox();
     forAll(abbGhost_, i)
@@ -696,7 +889,14 @@ void Foam::lbmBoundaries::report(Ostream& os) const
         os  << "    " << patches[patchi].name() << ": "
             << patchKindNames[patchKinds_[patchi]] << " (" << links[patchi]
             << " links" << (varying_[patchi] ? ", value in time" : "")
+            << (absorbing_[patchi] ? ", lets waves leave" : "")
             << ")" << nl;
+    }
+    const label nBody = returnReduce(bodyGhost_.size(), sumOp<label>());
+    if (nBody)
+    {
+        os  << "    obstacles: interpolated bounce-back (" << nBody
+            << " links)" << nl;
     }
     const label nUn = returnReduce(nUnclassified_, sumOp<label>());
     if (nUn)

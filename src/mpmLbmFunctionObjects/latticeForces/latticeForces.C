@@ -115,7 +115,16 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
     writeFile::read(dict);
 
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
-    const wordRes names(dict.get<wordRes>("patches"));
+    obstacleNames_ = dict.getOrDefault<wordRes>("obstacles", wordRes());
+    selectedBodies_.clear();
+    if (!dict.found("patches") && obstacleNames_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Give the patches, the obstacles or both whose force is"
+            << " wanted, e.g. patches (walls); or obstacles (pier);"
+            << exit(FatalIOError);
+    }
+    const wordRes names(dict.getOrDefault<wordRes>("patches", wordRes()));
     selected_.setSize(patches.size());
     selected_ = false;
     for (const wordRe& name : names)
@@ -188,9 +197,37 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
 bool Foam::functionObjects::latticeForces::execute()
 {
     physicsScene& scene = mpmLbmScene(mesh_, type(), name(), "fluid");
-    scene.effect<physicsEffects::fluid>("fluid").lbm().wallForce
+    latticeBoltzmannFluid& lbm =
+        scene.effect<physicsEffects::fluid>("fluid").lbm();
+    if (selectedBodies_.empty())
+    {
+        const wordList& bodies = lbm.obstacles().names();
+        selectedBodies_.setSize(bodies.size(), false);
+        for (const wordRe& name : obstacleNames_)
+        {
+            bool found = false;
+            forAll(bodies, b)
+            {
+                if (name.match(bodies[b]))
+                {
+                    selectedBodies_[b] = true;
+                    found = true;
+                }
+            }
+            if (!found)
+            {
+                FatalIOErrorInFunction(mesh_.time().controlDict())
+                    << "latticeForces " << this->name() << ": obstacles: "
+                    << name << " matches no obstacle of constant/"
+                    << "fluidProperties" << nl << "    Obstacles: " << bodies
+                    << exit(FatalIOError);
+            }
+        }
+    }
+    lbm.wallForce
     (
         selected_,
+        selectedBodies_,
         CofR_,
         pRef_,
         force_,

@@ -31,7 +31,28 @@ Foam::physicsEffects::fluid::fluid(physicsScene& scene)
 :
     physicsEffect(scene),
     lbm_(scene.lattice())
-{}
+{
+    // Bodies in the water are for the water alone: the couplings do not
+    // know their solid nodes yet
+    if (!lbm_.obstacles().empty())
+    {
+        const wordList effects(scene.dict().get<wordList>("effects"));
+        for (const word& e : effects)
+        {
+            if (e != "fluid" && e != "gravity")
+            {
+                FatalIOErrorInFunction(lbm_.dict())
+                    << "obstacles " << lbm_.obstacles().names()
+                    << " are for the water alone: the scene's effect " << e
+                    << " (constant/physicsProperties effects " << effects
+                    << ") does not take bodies in the water into account."
+                    << nl << "    Use effects (fluid) or (fluid gravity) with"
+                    << " obstacles, or give the body as cells missing from"
+                    << " the mesh" << exit(FatalIOError);
+            }
+        }
+    }
+}
 
 
 void Foam::physicsEffects::fluid::evolve(const sceneStage stage)

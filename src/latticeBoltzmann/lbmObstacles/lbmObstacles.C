@@ -1,0 +1,245 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "lbmObstacles.H"
+#include "caseChecks.H"
+#include "Time.H"
+#include "volumeType.H"
+#include "DynamicList.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::lbmObstacles::boundaryType>
+Foam::lbmObstacles::boundaryTypeNames
+({
+    { boundaryType::INTERPOLATED, "interpolated" },
+    { boundaryType::STAIRCASE, "staircase" },
+});
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::lbmObstacles::lbmObstacles
+(
+    const latticeMesh& lattice,
+    const dictionary& fluidDict
+)
+:
+    lattice_(lattice),
+    boundary_(INTERPOLATED)
+{
+    const dictionary* bodiesPtr = fluidDict.findDict("obstacles");
+    if (!bodiesPtr)
+    {
+        if (fluidDict.found("obstacles"))
+        {
+            FatalIOErrorInFunction(fluidDict)
+                << "obstacles must be a dictionary of bodies, e.g." << nl
+                << "    obstacles { pier { type searchableCylinder;"
+                << " point1 (0 0 -1); point2 (0 0 1); radius 0.1; } }"
+                << exit(FatalIOError);
+        }
+        runs_ = lattice_.runs();
+        return;
+    }
+    const dictionary& bodies = *bodiesPtr;
+    boundary_ = boundaryTypeNames.getOrDefault
+    (
+        "obstacleBoundary",
+        fluidDict,
+        INTERPOLATED
+    );
+
+    const Time& runTime = lattice_.mesh().time();
+    for (const entry& e : bodies)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(bodies)
+                << "obstacles: " << e.keyword() << " is not a dictionary:"
+                << " each body is a searchable surface { type ...; }"
+                << exit(FatalIOError);
+        }
+        const dictionary& bodyDict = e.dict();
+        const word type = bodyDict.get<word>("type");
+        autoPtr<searchableSurface> surface;
+        // OpenFOAM's surfaces raise errors that name no file: each is
+        // given the body's dictionary
+        const string failure = catchFatal
+        (
+            [&]()
+            {
+                surface = searchableSurface::New
+                (
+                    type,
+                    IOobject
+                    (
+                        e.keyword(),
+                        runTime.constant(),
+                        "triSurface",
+                        runTime,
+                        IOobject::MUST_READ,
+                        IOobject::NO_WRITE
+                    ),
+                    bodyDict
+                );
+            },
+            false
+        );
+        if (!failure.empty())
+        {
+            FatalIOErrorInFunction(bodyDict)
+                << "Obstacle " << e.keyword() << ": " << failure.c_str()
+                << exit(FatalIOError);
+        }
+        if (!surface->hasVolumeType())
+        {
+            FatalIOErrorInFunction(bodyDict)
+                << "Obstacle " << e.keyword() << ": surface type " << type
+                << " does not enclose a volume. Use a closed surface"
+                << " (searchableBox, searchableCylinder, searchableSphere, a"
+                << " closed triSurfaceMesh)" << exit(FatalIOError);
+        }
+        names_.append(e.keyword());
+        surfaces_.append(surface.ptr());
+    }
+    if (surfaces_.empty())
+    {
+        runs_ = lattice_.runs();
+        return;
+    }
+
+    // The body of every box node (owned, halo and wall nodes alike: a
+    // link from a processor's node sees the same bodies as the serial run)
+    const label nBox = lattice_.nBox();
+    pointField positions(nBox);
+    forAll(positions, n)
+    {
+        positions[n] = lattice_.position(n);
+    }
+    body_.setSize(nBox, -1);
+    forAll(surfaces_, b)
+    {
+        List<volumeType> inside;
+        surfaces_[b].getVolumeType(positions, inside);
+        forAll(inside, n)
+        {
+            if (body_[n] < 0 && inside[n] == volumeType::INSIDE)
+            {
+                body_[n] = b;
+            }
+        }
+    }
+
+    nSolid_.setSize(surfaces_.size(), 0);
+    for (const label n : lattice_.cellNode())
+    {
+        if (body_[n] >= 0)
+        {
+            ++nSolid_[body_[n]];
+        }
+    }
+    labelList total(nSolid_);
+    Pstream::listCombineGather(total, plusEqOp<label>());
+    Pstream::listCombineScatter(total);
+    forAll(total, b)
+    {
+        if (total[b] == 0)
+        {
+            FatalIOErrorInFunction(bodies.subDict(names_[b]))
+                << "Obstacle " << names_[b] << " contains no lattice node"
+                << " (cell centre): it is smaller than a cell or outside the"
+                << " mesh. Refine the mesh or enlarge the body"
+                << exit(FatalIOError);
+        }
+    }
+
+    // The kernel's runs without the solid nodes
+    DynamicList<latticeMesh::nodeRun> runs;
+    for (const latticeMesh::nodeRun& r : lattice_.runs())
+    {
+        label start = -1;
+        for (label n = r[0]; n < r[1]; ++n)
+        {
+            if (body_[n] < 0 && start < 0)
+            {
+                start = n;
+            }
+            else if (body_[n] >= 0 && start >= 0)
+            {
+                runs.append(latticeMesh::nodeRun({start, n}));
+                start = -1;
+            }
+        }
+        if (start >= 0)
+        {
+            runs.append(latticeMesh::nodeRun({start, r[1]}));
+        }
+    }
+    runs_.transfer(runs);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::lbmObstacles::wallFraction
+(
+    const label x,
+    const label s
+) const
+{
+    if (boundary_ == STAIRCASE)
+    {
+        return 0.5;
+    }
+    const point start = lattice_.position(x);
+    const point end = lattice_.position(s);
+    List<pointIndexHit> hit;
+    surfaces_[body_[s]].findLine
+    (
+        pointField(1, start),
+        pointField(1, end),
+        hit
+    );
+    if (!hit[0].hit())
+    {
+        // (a link that grazes the surface at its end)
+        return 1.0;
+    }
+    const scalar q = mag(hit[0].hitPoint() - start)/mag(end - start);
+    // (a surface through the water node itself: the wall is at x)
+    return min(max(q, 1e-6), 1.0);
+}
+
+
+void Foam::lbmObstacles::report(Ostream& os) const
+{
+    if (surfaces_.empty())
+    {
+        return;
+    }
+    labelList total(nSolid_);
+    Pstream::listCombineGather(total, plusEqOp<label>());
+    Pstream::listCombineScatter(total);
+    os  << "Obstacles in the water (" << boundaryTypeNames[boundary_]
+        << " bounce-back)" << nl;
+    forAll(names_, b)
+    {
+        os  << "    " << names_[b] << ": " << surfaces_[b].type() << ", "
+            << total[b] << " solid nodes" << nl;
+    }
+    os  << endl;
+}
+
+
+// ************************************************************************* //
