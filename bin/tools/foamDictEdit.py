@@ -142,9 +142,12 @@ def _parse_entries(text, toks, i, closing):
                         depth -= 1
                     elif w == ';' and depth == 0:
                         break
-                    # a named dictionary in a list: name { ... }
+                    # a named dictionary in a list: name { ... } (not a
+                    # uniform list N { value })
                     if (w == '{' and depth == 2 and i > first
-                            and toks[i - 1][0] == 'word'):
+                            and toks[i - 1][0] == 'word'
+                            and not text[toks[i - 1][1]:toks[i - 1][2]]
+                            .isdigit()):
                         sub = _Entry(text[toks[i - 1][1]:toks[i - 1][2]],
                                      toks[i - 1][1])
                         sub.value_start = s2

@@ -151,6 +151,10 @@ Foam::vector Foam::latticeBoltzmannFluid::momentum() const
     vector j(Zero);
     for (const label n : lattice_.cellNode())
     {
+        if (obstacles_->solid(n))
+        {
+            continue;
+        }
         for (label q = 0; q < Q; ++q)
         {
             j += f[q*nBox + n]*vector(c[q]);

@@ -69,11 +69,20 @@ void Foam::functionObjects::materialPointProbes::select
     {
         const point& loc = locations_[pi];
 
-        // This processor's nearest points
+        // This processor's nearest points (in the plane of a 2D mesh: the
+        // probe's z need not be the slab's)
+        const Vector<label>& solD = mesh_.solutionD();
         forAll(order, p)
         {
             order[p] = p;
-            d2[p] = magSqr(pts.x[p] - loc);
+            d2[p] = 0;
+            for (direction a = 0; a < 3; ++a)
+            {
+                if (solD[a] > 0)
+                {
+                    d2[p] += sqr(pts.x[p][a] - loc[a]);
+                }
+            }
         }
         const label k = min(nNearest_, pts.size());
         auto closer = [&](const label a, const label b)
@@ -226,14 +235,49 @@ void Foam::functionObjects::materialPointProbes::initialise
         return;
     }
     // A restart continues the probes of the run it continues
-    if
-    (
-        !getProperty("ids", ids_)
-     || !getProperty("weights", weights_)
-     || !getProperty("start", start_)
-     || ids_.size() != locations_.size()
-    )
+    bool found =
+        getProperty("ids", ids_)
+     && getProperty("weights", weights_)
+     && getProperty("start", start_)
+     && ids_.size() == locations_.size()
+     && weights_.size() == ids_.size()
+     && start_.size() == ids_.size();
+    forAll(ids_, pi)
     {
+        if (!found)
+        {
+            break;
+        }
+        scalar sumW = 0;
+        forAll(weights_[pi], i)
+        {
+            sumW += weights_[pi][i];
+            found = found && std::isfinite(weights_[pi][i]) && weights_[pi][i] >= 0;
+        }
+        found =
+            found && weights_[pi].size() == ids_[pi].size()
+         && ids_[pi].size() <= nNearest_ && mag(sumW - 1) < 1e-9
+         && std::isfinite(mag(start_[pi])) && min(ids_[pi]) >= 0;
+    }
+    if (!found)
+    {
+        const Time& runTime = mesh_.time();
+        if (runTime.value() > runTime.startTime().value() || runTime.timeIndex() > 0
+         || runTime.value() > 0)
+        {
+            // A restart without (valid) state: said, never silent
+            WarningInFunction
+                << "materialPointProbes " << name() << ": no valid state of"
+                << " its probes (ids, weights, start) in "
+                << runTime.timePath()/"uniform"/"functionObjects"
+                << "/functionObjectProperties" << nl
+                << "    The probes take the material nearest their"
+                << " locations at time " << runTime.timeName()
+                << ": their displacement counts from there" << endl;
+        }
+        ids_.clear();
+        weights_.clear();
+        start_.clear();
         select(scene);
     }
     buildSlots();

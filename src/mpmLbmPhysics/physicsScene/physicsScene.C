@@ -331,6 +331,7 @@ bool Foam::physicsScene::functionObjectsReadFields() const
     static const wordHashSet ownTypes
     ({
         "latticeForces",
+        "latticeWallShearStress",
         "materialPointProbes"
     });
     forAll(objects, i)

@@ -171,7 +171,10 @@ BASES = [
            '((0 0 0) (1 0 0) (1 3 0) (0 3 0) (0 0 0.25) (1 0 0.25) '
            '(1 3 0.25) (0 3 0.25))'),
           ('system/blockMeshDict', 'ny', '12'),
-          ('system/setMaterialPointsDict', 'regions/column/max', '(1 2 1)')]
+          ('system/setMaterialPointsDict', 'regions/column/max', '(1 2 1)'),
+          # (the tutorial's probes inside the shorter column)
+          ('system/controlDict', 'functions/column/probeLocations',
+           '((0.375 1.875 0.125) (0.375 1.125 0.125))')]
          + _control(0.01), soil=True),
     Base('granularCollapse', 'soil/granularCollapse',
          [('system/blockMeshDict', 'vertices',

@@ -33,7 +33,10 @@
 #       1.2% before);
 #     - global: q against (k/mu) DP/L within 1e-4 (the pore pressure is
 #       continuous where the water enters and leaves the soil: no loss at
-#       the ends).
+#       the ends);
+#     - the discharge that OpenFOAM's surfaceFieldValue reads on a plane
+#       sampled through the soil at mid-length (the seepage discharge an
+#       engineer asks for): (k/mu)(DP/L) A within 1e-3.
 #------------------------------------------------------------------------------
 import os
 import sys
@@ -103,4 +106,16 @@ ok &= foamio.check(abs(e) <= 1e-4, '%s seepage: Darcy q = (k/mu)(-dp/dx) within 
 e = qm / qGlobal - 1
 ok &= foamio.check(abs(e) <= 1e-4, '%s seepage: q = (k/mu) dp/L within 1e-4' % model,
                    'q %.6e m/s vs %.6e, deviation %+.1e' % (qm, qGlobal, e))
+
+# The seepage discharge OpenFOAM's surfaceFieldValue reads on a plane
+# through the soil at mid-length: q A, A the section 0.04 m x 0.01 m
+root = os.path.join(case, 'postProcessing', 'seepage', '0')
+rows = np.loadtxt(os.path.join(root, os.listdir(root)[0]), comments='#', ndmin=2)
+Q = rows[-1, 1]
+A = 0.04 * 0.01
+e = Q / (qGlobal * A) - 1
+ok &= foamio.check(abs(e) <= 1e-3, '%s seepage: the discharge through the soil\'s '
+                   'mid-section (surfaceFieldValue on a sampled plane) = (k/mu)(dp/L) A '
+                   'within 1e-3' % model, '%.6e m3/s vs %.6e, deviation %+.1e'
+                   % (Q, qGlobal * A, e))
 sys.exit(0 if ok else 1)

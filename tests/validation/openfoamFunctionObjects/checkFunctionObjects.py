@@ -18,7 +18,11 @@
 #       pressure boundaries' extra resistance, as validation/pressureChannel);
 #       the mean pressure DP/2 within 1%;
 #     - fieldAverage of the steady flow (from 30 s) equals the field at
-#       40 s within 1e-5 of the centreline speed.
+#       40 s within 1e-5 of the centreline speed;
+#     - the project's latticeWallShearStress: the walls' shear integrated
+#       carries DP H D within 1% and equals the walls' force of
+#       latticeForces (momentum exchange) within 2% (the corners' diagonal
+#       links share theirs with the pressure patches).
 #------------------------------------------------------------------------------
 import os
 import re
@@ -134,4 +138,26 @@ ok &= foamio.check(errAvg <= 1e-5, 'fieldAverage: the mean of the steady flow '
                    '(30-40 s) equals the field within 1e-5 of u_max (the flow\'s '
                    'own drift over the window)', 'largest difference %.1e of u_max'
                    % errAvg)
+# The project's latticeWallShearStress and latticeForces on the walls: the
+# shear integrated over the walls (mean x area) and the walls' force by
+# momentum exchange both carry the pressure drop's push DP H D (the
+# steady water's momentum balance)
+rowsWss = [l.split('\t') for l in open(os.path.join(pp, 'wallShear', '0', 'wallShearStress.dat'))
+           if not l.startswith('#')]
+last = [r for r in rowsWss if abs(float(r[0]) - 40) < 1e-9]
+meanX = float(re.findall(r'[-+0-9.eE]+', last[0][2])[0]) if last else float('nan')
+wallArea = 2 * L * D
+friction = meanX * wallArea
+force = np.loadtxt(os.path.join(pp, 'wallForce', '0', 'force.dat'), comments='#', ndmin=2)
+push = dp * H * D
+errF = abs(friction / push - 1)
+errME = abs(friction / force[-1, 1] - 1)
+# (the momentum exchange gives the x share of the diagonal links at the
+# walls' ends, which also cross the pressure patches, to those patches: one
+# end cell of 128 per wall end, about 1%)
+ok &= foamio.check(errF <= 0.01 and errME <= 0.02, 'latticeWallShearStress: the shear '
+                   'over the walls carries DP H D within 1%, and equals the walls\' '
+                   'force by momentum exchange (latticeForces) within 2%',
+                   '%.4f N vs DP H D %.1f N (%.1e), momentum exchange %.4f N (%.1e)'
+                   % (friction, push, errF, force[-1, 1], errME))
 sys.exit(0 if ok else 1)
