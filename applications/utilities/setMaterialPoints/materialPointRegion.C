@@ -38,18 +38,30 @@ void Foam::materialPointRegion::readGeostatic
     surfaceHeight_ = gd.get<scalar>("surface");
     K0_ = gd.get<scalar>("K0");
     waterRho_ = gd.getOrDefault<scalar>("waterDensity", 0);
-    if (!(waterRho_ >= 0))
+    // (the buoyant unit weight rho - (1 - n) rho_w must not be negative:
+    // 1e300 gave a stress no soil carries, and a trap in the first step)
+    if (!(waterRho_ >= 0) || !(rho_ - (1 - porosity_)*waterRho_ >= 0))
     {
         FatalIOErrorInFunction(gd)
             << "waterDensity " << waterRho_ << " is not"
-            << " allowed: it must be >= 0 [kg/m3]"
+            << " allowed: it must lie in [0, rho/(1 - porosity)] = [0, "
+            << rho_/(1 - porosity_) << "] kg/m3 (the soil's buoyant unit"
+            << " weight, rho - (1 - n) rho_w, must not be negative)"
             << exit(FatalIOError);
     }
-    if (!(K0_ >= 0))
+    if (!(K0_ >= 0) || !(K0_ <= 100))
     {
         FatalIOErrorInFunction(gd)
-            << "K0 " << K0_ << " is not allowed: it must be"
-            << " >= 0" << exit(FatalIOError);
+            << "K0 " << K0_ << " is not allowed: it must lie in [0, 100]"
+            << " (the ratio of the horizontal to the vertical stress)"
+            << exit(FatalIOError);
+    }
+    if (!std::isfinite(surfaceHeight_) || !(mag(surfaceHeight_) <= 1e6))
+    {
+        FatalIOErrorInFunction(gd)
+            << "surface " << surfaceHeight_ << " is not allowed: it is the"
+            << " height [m] of the ground's surface above the region, within"
+            << " 1e6 m of the origin" << exit(FatalIOError);
     }
     if (mag(gravity) < SMALL)
     {

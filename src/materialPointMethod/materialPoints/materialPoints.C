@@ -503,6 +503,21 @@ void Foam::materialPoints::readFields
         [](const scalar e) { return e >= 0; },
         "non-negative: an accumulated plastic strain"
     );
+    // (random bytes read as a double are mostly beyond any soil's: a
+    // stress of 1e250 Pa ran into a floating-point trap in the first step)
+    checkValues
+    (
+        sigma, dir/"stress", "values",
+        [](const symmTensor& s) { return cmptMax(cmptMag(s)) <= 1e12; },
+        "within 1e12 Pa in every component: a soil's stress (1 TPa is a"
+        " thousand times a rock's strength)"
+    );
+    checkValues
+    (
+        v, dir/"U", "values",
+        [](const vector& u) { return mag(u) <= 1e5; },
+        "within 1e5 m/s: a soil's speed"
+    );
 
     // The soil keeps V = det(F) V0 at every step (erosion shrinks V and
     // V0 alike): a volume, initial volume or deformation gradient damaged

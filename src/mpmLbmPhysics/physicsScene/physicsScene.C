@@ -456,6 +456,15 @@ void Foam::physicsScene::summary() const
         Info<< "    fields for function objects: " << fieldTime_ << " s ("
             << label(100*fieldTime_/max(wall, VSMALL) + 0.5) << "%)" << nl;
     }
+    // The rest of the wall time: the function objects' own work, the
+    // start-up, the progress reports
+    const scalar other = wall - sum(effectTime_) - writeTime_ - fieldTime_;
+    if (runTime_.functionObjects().status() && runTime_.functionObjects().size())
+    {
+        Info<< "    function objects, start-up and the rest: " << other
+            << " s (" << label(100*other/max(wall, VSMALL) + 0.5) << "%)"
+            << nl;
+    }
     Info<< endl;
 }
 
