@@ -90,6 +90,7 @@ Foam::functionObjects::latticeForces::latticeForces
 :
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, "force", dict),
+    bodiesSelected_(false),
     CofR_(Zero),
     pRef_(0),
     coefficients_(false),
@@ -113,10 +114,12 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
+    dict_ = dict;
 
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     obstacleNames_ = dict.getOrDefault<wordRes>("obstacles", wordRes());
     selectedBodies_.clear();
+    bodiesSelected_ = false;
     if (!dict.found("patches") && obstacleNames_.empty())
     {
         FatalIOErrorInFunction(dict)
@@ -124,28 +127,13 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
             << " wanted, e.g. patches (walls); or obstacles (pier);"
             << exit(FatalIOError);
     }
-    const wordRes names(dict.getOrDefault<wordRes>("patches", wordRes()));
-    selected_.setSize(patches.size());
-    selected_ = false;
-    for (const wordRe& name : names)
-    {
-        bool found = false;
-        forAll(patches, patchi)
-        {
-            if (name.match(patches[patchi].name()))
-            {
-                selected_[patchi] = true;
-                found = true;
-            }
-        }
-        if (!found)
-        {
-            FatalIOErrorInFunction(dict)
-                << "patches: " << name << " matches no patch of the mesh"
-                << nl << "    Patches: " << patches.names()
-                << exit(FatalIOError);
-        }
-    }
+    selected_ = selectNames
+    (
+        dict,
+        "patches",
+        dict.getOrDefault<wordRes>("patches", wordRes()),
+        patches.names()
+    );
 
     CofR_ = dict.getOrDefault<point>("CofR", Zero);
     pRef_ = dict.getOrDefault<scalar>("pRef", 0);
@@ -199,30 +187,17 @@ bool Foam::functionObjects::latticeForces::execute()
     physicsScene& scene = mpmLbmScene(mesh_, type(), name(), "fluid");
     latticeBoltzmannFluid& lbm =
         scene.effect<physicsEffects::fluid>("fluid").lbm();
-    if (selectedBodies_.empty())
+    if (!bodiesSelected_)
     {
-        const wordList& bodies = lbm.obstacles().names();
-        selectedBodies_.setSize(bodies.size(), false);
-        for (const wordRe& name : obstacleNames_)
-        {
-            bool found = false;
-            forAll(bodies, b)
-            {
-                if (name.match(bodies[b]))
-                {
-                    selectedBodies_[b] = true;
-                    found = true;
-                }
-            }
-            if (!found)
-            {
-                FatalIOErrorInFunction(mesh_.time().controlDict())
-                    << "latticeForces " << this->name() << ": obstacles: "
-                    << name << " matches no obstacle of constant/"
-                    << "fluidProperties" << nl << "    Obstacles: " << bodies
-                    << exit(FatalIOError);
-            }
-        }
+        bodiesSelected_ = true;
+        // (the obstacles of constant/fluidProperties)
+        selectedBodies_ = selectNames
+        (
+            dict_,
+            "obstacles",
+            obstacleNames_,
+            lbm.obstacles().names()
+        );
     }
     lbm.wallForce
     (

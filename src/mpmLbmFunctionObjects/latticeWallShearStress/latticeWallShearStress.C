@@ -90,22 +90,8 @@ bool Foam::functionObjects::latticeWallShearStress::read
     result_ = dict.getOrDefault<word>("result", "wallShearStress");
     selected_.clear();
 
-    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
-    for (const wordRe& name : patchNames_)
-    {
-        bool found = false;
-        forAll(patches, patchi)
-        {
-            found = found || name.match(patches[patchi].name());
-        }
-        if (!found)
-        {
-            FatalIOErrorInFunction(dict)
-                << "patches: " << name << " matches no patch of the mesh"
-                << nl << "    Patches: " << patches.names()
-                << exit(FatalIOError);
-        }
-    }
+    // (checked now: a name that matches no patch is refused at start-up)
+    selectNames(dict, "patches", patchNames_, mesh_.boundaryMesh().names());
     return true;
 }
 
@@ -122,20 +108,14 @@ bool Foam::functionObjects::latticeWallShearStress::execute()
         // The walls: the named patches, or every bounce-back wall
         const List<lbmBoundaries::patchKind>& kinds =
             lbm.boundaries().patchKinds();
-        selected_.setSize(patches.size(), false);
-        forAll(patches, patchi)
+        // (the names were checked by read)
+        selected_ = selectNames
+        (
+            dictionary::null, "patches", patchNames_, patches.names()
+        );
+        if (patchNames_.empty())
         {
-            if (patchNames_.size())
-            {
-                for (const wordRe& name : patchNames_)
-                {
-                    if (name.match(patches[patchi].name()))
-                    {
-                        selected_[patchi] = true;
-                    }
-                }
-            }
-            else
+            forAll(patches, patchi)
             {
                 selected_[patchi] =
                     kinds[patchi] == lbmBoundaries::WALL

@@ -46,4 +46,35 @@ Foam::physicsScene& Foam::mpmLbmScene
 }
 
 
+Foam::boolList Foam::selectNames
+(
+    const dictionary& dict,
+    const word& keyword,
+    const wordRes& selection,
+    const wordList& names
+)
+{
+    boolList selected(names.size(), false);
+    for (const wordRe& pattern : selection)
+    {
+        bool found = false;
+        forAll(names, i)
+        {
+            if (pattern.match(names[i]))
+            {
+                selected[i] = true;
+                found = true;
+            }
+        }
+        if (!found)
+        {
+            FatalIOErrorInFunction(dict)
+                << keyword << ": " << pattern << " matches none of " << names
+                << exit(FatalIOError);
+        }
+    }
+    return selected;
+}
+
+
 // ************************************************************************* //
