@@ -455,19 +455,16 @@ bool Foam::functionObjects::materialPointProbes::execute()
         const latticeBoltzmannFluid& lbm =
             scene.effect<physicsEffects::fluid>("fluid").lbm();
         const labelList& cellNode = lbm.lattice().cellNode();
+        // (a point on a processor face may be found by both)
+        scalarList count(n, Zero);
         forAll(here, pi)
         {
             const label celli = mesh_.findCell(here[pi]);
             if (celli >= 0)
             {
                 porePressure_[pi] = lbm.nodePressure(cellNode[celli]);
+                count[pi] = 1;
             }
-        }
-        // (a point on a processor face may be found by both)
-        scalarList count(n, Zero);
-        forAll(here, pi)
-        {
-            count[pi] = mesh_.findCell(here[pi]) >= 0 ? 1 : 0;
         }
         Pstream::listCombineGather(porePressure_, plusEqOp<scalar>());
         Pstream::listCombineGather(count, plusEqOp<scalar>());

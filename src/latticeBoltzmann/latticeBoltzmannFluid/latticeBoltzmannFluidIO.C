@@ -1,0 +1,150 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "latticeBoltzmannFluid.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "nodeFieldIO.H"
+#include "selectEntry.H"
+#include "caseChecks.H"
+#include "lbmKernel.H"
+#include "vector2D.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::latticeBoltzmannFluid::initialise()
+{
+    const Time& runTime = mesh_.time();
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const labelList& cellNode = lattice_.cellNode();
+
+    fA_.setSize(Q*nBox, 0.0);
+    fB_.setSize(Q*nBox, 0.0);
+    AisCurrent_ = true;
+
+    auto popIO = [&](const label q, IOobject::readOption r)
+    {
+        return IOobject
+        (
+            "lbmF" + Foam::name(q),
+            runTime.timeName(),
+            mesh_,
+            r,
+            IOobject::NO_WRITE,
+            false
+        );
+    };
+
+    const bool hasFirst =
+        popIO(0, IOobject::MUST_READ).typeHeaderOk<volScalarField>(true);
+
+    restarted_ = hasFirst;
+    if (hasFirst)
+    {
+        if
+        (
+            !popIO(Q - 1, IOobject::MUST_READ)
+                .typeHeaderOk<volScalarField>(true)
+         || popIO(Q, IOobject::MUST_READ).typeHeaderOk<volScalarField>(true)
+        )
+        {
+            FatalIOErrorInFunction(dict_)
+                << "The populations in " << runTime.timePath() << " were not"
+                << " written with velocitySet " << velocitySet_->type()
+                << " (" << Q << " files lbmF0..lbmF" << Q - 1 << " expected)."
+                << nl << "    Restart with the velocity set of that run, or"
+                << " remove the lbmF* files to start from U and p at"
+                << " equilibrium." << exit(FatalIOError);
+        }
+
+        Info<< "Reading populations lbmF0..lbmF" << Q - 1 << " from time "
+            << runTime.timeName() << nl << endl;
+        scalarList& f = current();
+        for (label q = 0; q < Q; ++q)
+        {
+            readNodeField(lattice_, "lbmF" + Foam::name(q), f.data() + q*nBox);
+        }
+
+        // Porous flow: the porosity the populations were made with
+        if (foundNodeField(lattice_, "lbmPorosity"))
+        {
+            writtenPorosity_.setSize(nBox, 1.0);
+            readNodeField(lattice_, "lbmPorosity", writtenPorosity_.data());
+        }
+
+        // Outlets that let waves leave: their boundary pressures
+        if (boundaries_->hasAbsorbing())
+        {
+            const fileName file
+            (
+                runTime.timePath()/"uniform"/outletStateFile
+            );
+            if (isFile(file))
+            {
+                IFstream is(file);
+                const dictionary state(is);
+                const scalarList rho(state.get<scalarList>("rho"));
+                if (rho.size() != boundaries_->absorbingState().size())
+                {
+                    FatalIOErrorInFunction(state)
+                        << "rho in " << file << " has " << rho.size()
+                        << " values, the outlets' links here "
+                        << boundaries_->absorbingState().size() << ": it was"
+                        << " written with another mesh or decomposition."
+                        << nl << "    Remove it to start the outlets from"
+                        << " their patch values of p" << exit(FatalIOError);
+                }
+                boundaries_->setAbsorbingState(rho);
+            }
+        }
+    }
+    else
+    {
+        Info<< "Initialising populations at equilibrium from U and p"
+            << nl << endl;
+        scalarList& f = current();
+        const List<labelVector>& c = velocitySet_->c();
+        const scalarList& w = velocitySet_->w();
+        forAll(cellNode, celli)
+        {
+            const scalar rho = units_.rhoLattice(p_[celli]);
+            const vector u = units_.toLattice(U_[celli]);
+            for (label q = 0; q < Q; ++q)
+            {
+                const scalar cu = vector(c[q]) & u;
+                f[q*nBox + cellNode[celli]] =
+                    w[q]*rho*(1 + 3*cu + 4.5*cu*cu - 1.5*magSqr(u));
+            }
+        }
+    }
+
+    // Initial mass
+    const scalarList& f = current();
+    scalar mass = 0;
+    for (const label n : cellNode)
+    {
+        if (obstacles_->solid(n))
+        {
+            continue;
+        }
+        for (label q = 0; q < Q; ++q)
+        {
+            mass += f[q*nBox + n];
+        }
+    }
+    mass0_ = returnReduce(mass, sumOp<scalar>());
+}
+
+
+// ************************************************************************* //
