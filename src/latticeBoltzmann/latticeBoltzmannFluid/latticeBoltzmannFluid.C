@@ -142,7 +142,7 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
     forAll(cellNode, celli)
     {
         const label n = cellNode[celli];
-        if (obstacles_->solid(n))
+        if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
         {
             continue;
         }
@@ -173,7 +173,13 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
             << mesh_.cellCentres()[celli] << where.c_str()
             << nl << "    lattice density " << rho << ", lattice velocity "
             << u << ", Mach " << mag(u)/std::sqrt(lattice::cs2)
-            << " (limit machLimit " << machLimit_ << ")" << nl
+            << " (limit machLimit " << machLimit_ << ")" << nl;
+        if (freeSurface_)
+        {
+            FatalError
+                << "    free surface: " << freeSurface_->describe(n) << nl;
+        }
+        FatalError
             << "    tau = " << units_.tau() << ", collision model "
             << collision_->type() << nl
             << "    Nothing of this step was written. To stay stable:" << nl
@@ -687,6 +693,16 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         f.data(),
         porosity_.size() ? porosity_.cdata() : nullptr
     );
+    if (freeSurface_)
+    {
+        // (after the halo: the gas slots next to this processor's
+        // interface nodes are its own to rebuild)
+        freeSurface_->reconstruct
+        (
+            f.data(),
+            units_.accelerationToLattice(bodyAcceleration_)
+        );
+    }
     prepared_ = true;
 }
 
@@ -738,7 +754,9 @@ void Foam::latticeBoltzmannFluid::step()
     a.nBox = nBox;
     a.offset = offset_.cdata();
     // (the water's runs: without the nodes inside bodies)
-    const List<latticeMesh::nodeRun>& runs = obstacles_->runs();
+    // (with a free surface: without the gas nodes)
+    const List<latticeMesh::nodeRun>& runs =
+        freeSurface_ ? freeSurface_->runs() : obstacles_->runs();
     a.runs = reinterpret_cast<const label (*)[2]>(runs.cdata());
     a.nRuns = runs.size();
     const vector g = units_.accelerationToLattice(bodyAcceleration_);
@@ -784,6 +802,62 @@ void Foam::latticeBoltzmannFluid::step()
     }
 
     AisCurrent_ = !AisCurrent_;
+}
+
+
+void Foam::latticeBoltzmannFluid::enableFreeSurface
+(
+    const scalar gasPressure,
+    const scalar fillMargin,
+    const scalarField& alpha
+)
+{
+    freeSurface_.reset
+    (
+        new lbmFreeSurface
+        (
+            lattice_, velocitySet_(), units_, obstacles_(), gasPressure,
+            fillMargin
+        )
+    );
+    scalarList& f = current();
+    if (restarted_)
+    {
+        for (const word& name : freeSurface_->stateFiles())
+        {
+            if (!foundNodeField(lattice_, name))
+            {
+                FatalErrorInFunction
+                    << "The populations of time " << mesh_.time().timeName()
+                    << " were written without the free surface: "
+                    << mesh_.time().timePath()/name << " is missing." << nl
+                    << "    Restart a free-surface run from a time it wrote,"
+                    << " or remove the lbmF* files to start from U, p and"
+                    << " alpha.water" << exit(FatalError);
+            }
+        }
+        freeSurface_->readState(f.data());
+    }
+    else
+    {
+        freeSurface_->setFromFraction(alpha, f.data());
+    }
+    mass0_ = returnReduce(freeSurface_->mass(f.cdata()), sumOp<scalar>());
+}
+
+
+void Foam::latticeBoltzmannFluid::updateInterface()
+{
+    if (!freeSurface_)
+    {
+        return;
+    }
+    scalarList& f = current();
+    freeSurface_->convert
+    (
+        f.data(),
+        units_.accelerationToLattice(bodyAcceleration_)
+    );
 }
 
 

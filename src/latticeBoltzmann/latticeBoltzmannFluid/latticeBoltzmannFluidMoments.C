@@ -103,7 +103,7 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
     sigma = Zero;
     for (const label n : lattice_.cellNode())
     {
-        if (obstacles_->solid(n))
+        if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
         {
             continue;
         }
@@ -151,7 +151,7 @@ Foam::vector Foam::latticeBoltzmannFluid::momentum() const
     vector j(Zero);
     for (const label n : lattice_.cellNode())
     {
-        if (obstacles_->solid(n))
+        if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
         {
             continue;
         }
@@ -167,8 +167,14 @@ Foam::vector Foam::latticeBoltzmannFluid::momentum() const
 
 Foam::scalar Foam::latticeBoltzmannFluid::massDefect() const
 {
-    // Against the initial mass plus what the displacement source added
-    Vector2D<scalar> m(stats_.mass, displacedMass_);
+    // Against the initial mass plus what the displacement source added.
+    // With a free surface: the liquid's populations and the interface
+    // nodes' masses, summed only when asked (a pass over the populations)
+    Vector2D<scalar> m
+    (
+        freeSurface_ ? freeSurface_->mass(current().cdata()) : stats_.mass,
+        displacedMass_
+    );
     reduce(m, sumOp<Vector2D<scalar>>());
     return m.x()/(mass0_ + m.y()) - 1.0;
 }
@@ -179,7 +185,8 @@ Foam::scalar Foam::latticeBoltzmannFluid::memoryBytes() const
     return returnReduce
     (
         scalar(sizeof(scalar))
-       *(fA_.size() + fB_.size() + 11*Fx_.size() + porosity_.size()),
+       *(fA_.size() + fB_.size() + 11*Fx_.size() + porosity_.size())
+      + (freeSurface_ ? freeSurface_->memoryBytes() : 0),
         sumOp<scalar>()
     );
 }
@@ -212,6 +219,14 @@ void Foam::latticeBoltzmannFluid::updateFields()
             U[celli] = Zero;
             p[celli] = 0;
             rhoPhys[celli] = units_.rho0();
+            continue;
+        }
+        if (freeSurface_ && freeSurface_->gas(n))
+        {
+            // Gas: no water, at the gas pressure
+            U[celli] = Zero;
+            p[celli] = units_.pressure(freeSurface_->rhoGas());
+            rhoPhys[celli] = 0;
             continue;
         }
         scalar rho = 0;
@@ -287,7 +302,7 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
     u = Zero;
     for (const label n : lattice_.cellNode())
     {
-        if (obstacles_->solid(n))
+        if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
         {
             continue;
         }
@@ -310,6 +325,10 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
 
 Foam::scalar Foam::latticeBoltzmannFluid::populationSum() const
 {
+    if (freeSurface_)
+    {
+        return freeSurface_->mass(current().cdata());
+    }
     const label Q = velocitySet_->Q();
     const label nBox = lattice_.nBox();
     const scalarList& f = current();
@@ -346,6 +365,10 @@ Foam::wordList Foam::latticeBoltzmannFluid::populationFiles() const
     {
         names.append("uniform"/outletStateFile);
     }
+    if (freeSurface_)
+    {
+        names.append(freeSurface_->stateFiles());
+    }
     return names;
 }
 
@@ -370,6 +393,11 @@ void Foam::latticeBoltzmannFluid::writePopulations() const
             "lbmPorosity",
             (heldPorosity_.size() ? heldPorosity_ : porosity_).cdata()
         );
+    }
+
+    if (freeSurface_)
+    {
+        freeSurface_->writeState();
     }
 
     if (boundaries_->hasAbsorbing())

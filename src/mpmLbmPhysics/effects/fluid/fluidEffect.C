@@ -39,7 +39,7 @@ Foam::physicsEffects::fluid::fluid(physicsScene& scene)
         const wordList effects(scene.dict().get<wordList>("effects"));
         for (const word& e : effects)
         {
-            if (e != "fluid" && e != "gravity")
+            if (e != "fluid" && e != "gravity" && e != "freeSurface")
             {
                 FatalIOErrorInFunction(lbm_.dict())
                     << "obstacles " << lbm_.obstacles().names()

@@ -1,0 +1,806 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+#include "lbmFreeSurface.H"
+#include "nodeFieldIO.H"
+#include "latticeDescriptors.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(lbmFreeSurface, 0);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::lbmFreeSurface::exchangeTypes()
+{
+    lattice_.halo().exchange(type_);
+}
+
+
+void Foam::lbmFreeSurface::rebuild()
+{
+    // The kernel's runs: the obstacles' runs (the water's nodes) without
+    // the gas nodes
+    runs_.clear();
+    interface_.clear();
+    DynamicList<latticeMesh::nodeRun> runs(obstacles_.runs().size());
+    for (const latticeMesh::nodeRun& r : obstacles_.runs())
+    {
+        label start = -1;
+        for (label n = r[0]; n < r[1]; ++n)
+        {
+            const bool water = (type_[n] != GAS);
+            if (water && start < 0)
+            {
+                start = n;
+            }
+            else if (!water && start >= 0)
+            {
+                runs.append(latticeMesh::nodeRun({start, n}));
+                start = -1;
+            }
+            if (type_[n] == INTERFACE)
+            {
+                interface_.append(n);
+            }
+        }
+        if (start >= 0)
+        {
+            runs.append(latticeMesh::nodeRun({start, r[1]}));
+        }
+    }
+    runs_.transfer(runs);
+}
+
+
+void Foam::lbmFreeSurface::moments
+(
+    const scalar* f,
+    const label n,
+    const vector& g,
+    scalar& rho,
+    vector& u
+) const
+{
+    const label Q = vs_.Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = vs_.c();
+    rho = 0;
+    vector j(Zero);
+    for (label q = 0; q < Q; ++q)
+    {
+        const scalar fq = f[q*nBox + n];
+        rho += fq;
+        j += fq*vector(c[q]);
+    }
+    // Post-collision momentum is rho u + F/2 (Guo), F = rho g
+    u = j/rho - 0.5*g;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::lbmFreeSurface::lbmFreeSurface
+(
+    const latticeMesh& lattice,
+    const velocitySet& vs,
+    const lbmUnits& units,
+    const lbmObstacles& obstacles,
+    const scalar gasPressure,
+    const scalar fillMargin
+)
+:
+    lattice_(lattice),
+    vs_(vs),
+    units_(units),
+    obstacles_(obstacles),
+    rhoGas_(units.rhoLattice(gasPressure)),
+    fillMargin_(fillMargin),
+    type_(lattice.nBox(), NONE),
+    mass_(lattice.nBox(), 0.0),
+    fill_(lattice.nBox(), 0.0),
+    rhoU_(4*lattice.nBox(), 0.0),
+    share_(lattice.nBox(), 0.0),
+    offset_(vs.Q()),
+    nFilled_(0),
+    nEmptied_(0)
+{
+    forAll(offset_, q)
+    {
+        const labelVector& c = vs.c()[q];
+        offset_[q] = lattice.offset(c.x(), c.y(), c.z());
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::lbmFreeSurface::setFromFraction
+(
+    const scalarField& alpha,
+    scalar* f
+)
+{
+    const label Q = vs_.Q();
+    const label nBox = lattice_.nBox();
+    const labelList& cellNode = lattice_.cellNode();
+    const scalarList& w = vs_.w();
+
+    // (alpha is checked by the caller: finite, in [0, 1])
+    forAll(cellNode, celli)
+    {
+        const label n = cellNode[celli];
+        if (obstacles_.solid(n))
+        {
+            continue;
+        }
+        scalar rho = 0;
+        for (label q = 0; q < Q; ++q)
+        {
+            rho += f[q*nBox + n];
+        }
+        const scalar a = alpha[celli];
+        if (a >= 1)
+        {
+            type_[n] = LIQUID;
+            mass_[n] = rho;
+            fill_[n] = 1;
+        }
+        else if (a <= 0)
+        {
+            type_[n] = GAS;
+            mass_[n] = 0;
+            fill_[n] = 0;
+        }
+        else
+        {
+            type_[n] = INTERFACE;
+            mass_[n] = a*rho;
+            fill_[n] = a;
+        }
+    }
+    exchangeTypes();
+
+    // Close the interface layer: a liquid node next to gas is an interface
+    // node, full
+    forAll(cellNode, celli)
+    {
+        const label n = cellNode[celli];
+        if (type_[n] != LIQUID)
+        {
+            continue;
+        }
+        for (label q = 1; q < Q; ++q)
+        {
+            if (type_[n - offset_[q]] == GAS)
+            {
+                type_[n] = INTERFACE;
+                break;
+            }
+        }
+    }
+    exchangeTypes();
+    lattice_.halo().exchange(fill_.data(), 1, nBox);
+
+    // The gas at rest at its own density (its populations are never
+    // streamed into water: only finite)
+    forAll(cellNode, celli)
+    {
+        const label n = cellNode[celli];
+        if (type_[n] == GAS)
+        {
+            for (label q = 0; q < Q; ++q)
+            {
+                f[q*nBox + n] = w[q]*rhoGas_;
+            }
+        }
+    }
+    rebuild();
+}
+
+
+void Foam::lbmFreeSurface::readState(scalar* f)
+{
+    const label nBox = lattice_.nBox();
+    scalarList t(nBox, 0.0);
+    readNodeField(lattice_, "lbmFreeSurfaceType", t.data());
+    readNodeField(lattice_, "lbmFreeSurfaceMass", mass_.data());
+    const labelList& cellNode = lattice_.cellNode();
+    const label Q = vs_.Q();
+    for (const label n : cellNode)
+    {
+        if (obstacles_.solid(n))
+        {
+            continue;
+        }
+        const label ti = label(t[n]);
+        if
+        (
+            !(t[n] == ti)
+         || (ti != LIQUID && ti != INTERFACE && ti != GAS)
+        )
+        {
+            FatalErrorInFunction
+                << "lbmFreeSurfaceType in " << lattice_.mesh().time().timePath()
+                << " holds " << t[n] << " at node " << n << ": only "
+                << label(LIQUID) << " (liquid), " << label(INTERFACE)
+                << " (interface) or " << label(GAS) << " (gas) are written."
+                << nl << "    The file is damaged: restart from another"
+                << " written time" << exit(FatalError);
+        }
+        type_[n] = ti;
+        scalar rho = 0;
+        for (label q = 0; q < Q; ++q)
+        {
+            rho += f[q*nBox + n];
+        }
+        if (ti == LIQUID)
+        {
+            mass_[n] = rho;
+            fill_[n] = 1;
+        }
+        else if (ti == GAS)
+        {
+            mass_[n] = 0;
+            fill_[n] = 0;
+        }
+        else
+        {
+            fill_[n] = min(max(mass_[n]/rho, 0.0), 1.0);
+        }
+    }
+    exchangeTypes();
+    lattice_.halo().exchange(fill_.data(), 1, nBox);
+    rebuild();
+}
+
+
+void Foam::lbmFreeSurface::writeState() const
+{
+    // The types, and the masses of the interface nodes (a liquid node's is
+    // its density, a gas node's 0: not written, so a restart's files equal
+    // a straight run's byte for byte)
+    scalarList t(lattice_.nBox(), 0.0);
+    scalarList m(lattice_.nBox(), 0.0);
+    forAll(t, n)
+    {
+        t[n] = type_[n];
+        if (type_[n] == INTERFACE)
+        {
+            m[n] = mass_[n];
+        }
+    }
+    writeNodeField(lattice_, "lbmFreeSurfaceType", t.cdata());
+    writeNodeField(lattice_, "lbmFreeSurfaceMass", m.cdata());
+}
+
+
+Foam::wordList Foam::lbmFreeSurface::stateFiles() const
+{
+    return wordList({"lbmFreeSurfaceType", "lbmFreeSurfaceMass"});
+}
+
+
+void Foam::lbmFreeSurface::reconstruct(scalar* f, const vector& g)
+{
+    const label Q = vs_.Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+    const labelList& opp = vs_.opp();
+
+    // The mass each interface node exchanges, from the populations as
+    // they left the collision (before any is rebuilt)
+    exchangeMass(f);
+
+    // The density and velocity of every interface node first: a rebuilt
+    // population may replace one of a neighbouring interface node's
+    scalar* rhoN = rhoU_.data();
+    scalar* uN[3] =
+        {rhoU_.data() + nBox, rhoU_.data() + 2*nBox, rhoU_.data() + 3*nBox};
+    for (const label x : interface_)
+    {
+        scalar rho;
+        vector u;
+        moments(f, x, g, rho, u);
+        rhoN[x] = rho;
+        uN[0][x] = u.x();
+        uN[1][x] = u.y();
+        uN[2][x] = u.z();
+    }
+
+    const bool gravity = (magSqr(g) > 0);
+    for (const label x : interface_)
+    {
+        const vector u(uN[0][x], uN[1][x], uN[2][x]);
+        const scalar u2 = magSqr(u);
+
+        // Where the gas pressure holds. The rebuilt populations set it at
+        // the middle of each link to the gas, wherever the surface lies in
+        // the node: a shift of up to one cell, rho g dx of pressure in
+        // the whole water at rest. With gravity, the gas density of each
+        // link is the gas pressure carried hydrostatically from the
+        // surface (at (fill - 1/2) dx along the normal n from the node)
+        // to the link's middle, x - c_q/2: p = p_gas + rho g.(x_mid - x_s)
+        vector surface(Zero);
+        if (gravity)
+        {
+            const scalar phi = fill_[x];
+            vector grad(Zero);
+            for (label q = 1; q < Q; ++q)
+            {
+                const label y = x + offset_[q];
+                // (walls: no gradient across them)
+                const scalar phiY = (type_[y] == NONE ? phi : fill_[y]);
+                grad += w[q]*phiY*vector(c[q]);
+            }
+            const scalar magGrad = mag(grad);
+            if (magGrad > SMALL)
+            {
+                // n = -grad/|grad| points into the gas
+                surface = -(phi - 0.5)/magGrad*grad;
+            }
+        }
+
+        for (label q = 1; q < Q; ++q)
+        {
+            const label y = x - offset_[q];
+            // (only the populations the gas would send: rebuilding also
+            // those arriving from the gas side of the surface, n.c_q < 0,
+            // as Koerner et al. 2005, drove currents of 1 m/s in a tank at
+            // rest here)
+            if (type_[y] != GAS)
+            {
+                continue;
+            }
+            scalar rhoG = rhoGas_;
+            if (gravity)
+            {
+                // x_mid - x_s, in lattice units (cs^2 = 1/3)
+                const vector d(-0.5*vector(c[q]) - surface);
+                rhoG += 3*rhoN[x]*(g & d);
+            }
+            // f^eq_q + f^eq_-q at the gas density: the odd terms cancel
+            const scalar cu = vector(c[q]) & u;
+            f[q*nBox + y] =
+                2*w[q]*rhoG*(1 + 4.5*cu*cu - 1.5*u2)
+              - f[opp[q]*nBox + x];
+        }
+    }
+}
+
+
+void Foam::lbmFreeSurface::exchangeMass(const scalar* f)
+{
+    const label Q = vs_.Q();
+    const label nBox = lattice_.nBox();
+    const labelList& opp = vs_.opp();
+
+    for (const label x : interface_)
+    {
+        scalar dm = 0;
+        for (label q = 1; q < Q; ++q)
+        {
+            const label y = x - offset_[q];
+            const label t = type_[y];
+            scalar s = 0;
+            if (t == LIQUID)
+            {
+                s = 1;
+            }
+            else if (t == INTERFACE)
+            {
+                s = 0.5*(fill_[x] + fill_[y]);
+            }
+            else
+            {
+                continue;
+            }
+            dm += s*(f[q*nBox + y] - f[opp[q]*nBox + x]);
+        }
+        mass_[x] += dm;
+    }
+}
+
+
+void Foam::lbmFreeSurface::spreadOverLiquid(scalar* f, scalar dm) const
+{
+    // Collective: every rank takes part, with or without a share (the
+    // liquid counted only when there is something to spread)
+    const scalar dmAll = returnReduce(dm, sumOp<scalar>());
+    if (dmAll == 0)
+    {
+        return;
+    }
+    const label Q = vs_.Q();
+    const label nBox = lattice_.nBox();
+    const scalarList& w = vs_.w();
+    scalar nLiquid = 0;
+    for (const label n : lattice_.cellNode())
+    {
+        nLiquid += (type_[n] == LIQUID);
+    }
+    reduce(nLiquid, sumOp<scalar>());
+    // (nLiquid >= 1: every giver had a liquid neighbour, which stays
+    // liquid through the conversion)
+    const scalar drho = dmAll/nLiquid;
+    for (const label n : lattice_.cellNode())
+    {
+        if (type_[n] == LIQUID)
+        {
+            for (label q = 0; q < Q; ++q)
+            {
+                f[q*nBox + n] += w[q]*drho;
+            }
+        }
+    }
+}
+
+
+void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
+{
+    const label Q = vs_.Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+    const labelList& cellNode = lattice_.cellNode();
+    const haloExchange& halo = lattice_.halo();
+
+    scalar* rhoN = rhoU_.data();
+    scalar* uN[3] =
+        {rhoU_.data() + nBox, rhoU_.data() + 2*nBox, rhoU_.data() + 3*nBox};
+
+    // 1. Interface nodes that filled or emptied (their density and
+    //    velocity kept for their new neighbours)
+    for (const label x : interface_)
+    {
+        scalar rho;
+        vector u;
+        moments(f, x, g, rho, u);
+        rhoN[x] = rho;
+        uN[0][x] = u.x();
+        uN[1][x] = u.y();
+        uN[2][x] = u.z();
+
+        bool gasNear = false, liquidNear = false;
+        for (label q = 1; q < Q; ++q)
+        {
+            const label t = type_[x - offset_[q]];
+            gasNear = gasNear || t == GAS;
+            liquidNear = liquidNear || t == LIQUID;
+        }
+        const scalar m = mass_[x];
+        if (m > (1 + fillMargin_)*rho || !gasNear)
+        {
+            type_[x] = TO_FILL;
+        }
+        else if (m < -fillMargin_*rho || !liquidNear)
+        {
+            type_[x] = TO_EMPTY;
+        }
+    }
+    exchangeTypes();
+    halo.exchange(rhoU_.data(), 4, nBox);
+
+    // 2. Gas next to a filling node becomes interface; an emptying node
+    //    next to a filling one stays interface
+    for (const label n : cellNode)
+    {
+        const label t = type_[n];
+        if (t != GAS && t != TO_EMPTY)
+        {
+            continue;
+        }
+        for (label q = 1; q < Q; ++q)
+        {
+            if (type_[n - offset_[q]] == TO_FILL)
+            {
+                type_[n] = (t == GAS ? NEW_INTERFACE : INTERFACE);
+                break;
+            }
+        }
+    }
+    exchangeTypes();
+
+    // 3. New interface nodes at the equilibrium of their water
+    //    neighbours' mean density and velocity; liquid next to an
+    //    emptying node becomes interface (full)
+    for (const label n : cellNode)
+    {
+        const label t = type_[n];
+        if (t == NEW_INTERFACE)
+        {
+            scalar rho = 0;
+            vector u(Zero);
+            label k = 0;
+            for (label q = 1; q < Q; ++q)
+            {
+                const label y = n - offset_[q];
+                if (type_[y] & (INTERFACE | TO_FILL | TO_EMPTY))
+                {
+                    rho += rhoN[y];
+                    u += vector(uN[0][y], uN[1][y], uN[2][y]);
+                    ++k;
+                }
+            }
+            // (k >= 1: a neighbour filled)
+            rho /= k;
+            u /= k;
+            const scalar u2 = magSqr(u);
+            for (label q = 0; q < Q; ++q)
+            {
+                const scalar cu = vector(c[q]) & u;
+                f[q*nBox + n] = w[q]*rho*(1 + 3*cu + 4.5*cu*cu - 1.5*u2);
+            }
+            // Guo: the populations carry rho u + F/2
+            for (label q = 0; q < Q; ++q)
+            {
+                f[q*nBox + n] += 1.5*w[q]*rho*(vector(c[q]) & g);
+            }
+            rhoN[n] = rho;
+            mass_[n] = 0;
+        }
+        else if (t == LIQUID)
+        {
+            for (label q = 1; q < Q; ++q)
+            {
+                if (type_[n - offset_[q]] == TO_EMPTY)
+                {
+                    type_[n] = INTERFACE;
+                    scalar rho = 0;
+                    for (label p = 0; p < Q; ++p)
+                    {
+                        rho += f[p*nBox + n];
+                    }
+                    mass_[n] = rho;
+                    rhoN[n] = rho;
+                    break;
+                }
+            }
+        }
+    }
+    exchangeTypes();
+
+    // 4. The excess mass: of each converting node (m - rho of a filling
+    //    one, m of an emptying one) and of each interface node outside
+    //    [0, rho] (its mass clamped, as FluidX3D does every step, so no
+    //    node carries a negative mass or a fill level above 1 for long),
+    //    shared evenly among the neighbours that are interface nodes (old
+    //    and new), as mass (Thuerey 2007, section 4.4, without the normal
+    //    weighting). Where no interface node can take it (a gas pocket
+    //    closed by the surge in a corner fills at once with m ~ 0 and
+    //    rho ~ 1: a deficit of a whole node), it is spread over all the
+    //    liquid as a uniform change of density, at rest (the limit of the
+    //    sound wave that would carry it): handed to the liquid neighbours
+    //    it drove them to density ~0.7 and unstable at water's viscosity
+    //    (tau - 1/2 ~ 1e-4), kept in the node's own populations to ~0.
+    //    Liquid neighbours take no share otherwise: shares to liquid at
+    //    every conversion drove the thin film and the surge tip unstable.
+    nFilled_ = 0;
+    nEmptied_ = 0;
+    DynamicList<label> keep;
+    scalar spread = 0;
+    for (const label n : cellNode)
+    {
+        share_[n] = 0;
+        const label t = type_[n];
+        scalar excess = 0;
+        if (t == TO_FILL)
+        {
+            excess = mass_[n] - rhoN[n];
+        }
+        else if (t == TO_EMPTY)
+        {
+            excess = mass_[n];
+        }
+        else if (t == INTERFACE)
+        {
+            scalar rho = 0;
+            for (label q = 0; q < Q; ++q)
+            {
+                rho += f[q*nBox + n];
+            }
+            rhoN[n] = rho;
+            const scalar m = mass_[n];
+            excess = (m > rho ? m - rho : (m < 0 ? m : 0));
+        }
+        if (excess == 0 && t != TO_EMPTY)
+        {
+            continue;
+        }
+        label nInterface = 0, nLiquid = 0;
+        for (label q = 1; q < Q; ++q)
+        {
+            const label ty = type_[n - offset_[q]];
+            nInterface += ((ty & (INTERFACE | NEW_INTERFACE)) != 0);
+            nLiquid += (ty == LIQUID);
+        }
+        if (nInterface > 0)
+        {
+            share_[n] = excess/nInterface;
+        }
+        else if (nLiquid > 0 && t != INTERFACE)
+        {
+            spread += excess;
+        }
+        else if (t == TO_FILL)
+        {
+            // No water neighbour at all (a drop of one node): the excess
+            // stays in the node's own populations
+            for (label q = 0; q < Q; ++q)
+            {
+                f[q*nBox + n] += w[q]*excess;
+            }
+            rhoN[n] += excess;
+            continue;
+        }
+        else if (t == TO_EMPTY)
+        {
+            // No neighbour to take it: the node stays an interface node
+            // with its mass
+            keep.append(n);
+            continue;
+        }
+        else
+        {
+            // (an interface node with only liquid neighbours keeps its
+            // mass: it fills at the next step)
+            continue;
+        }
+        if (t == INTERFACE)
+        {
+            mass_[n] -= excess;
+        }
+    }
+    halo.exchange(share_.data(), 1, nBox);
+
+    // 5. Gather the shares (each receiver was counted by its giver) and
+    //    set the new types
+    for (const label n : cellNode)
+    {
+        if (type_[n] & (INTERFACE | NEW_INTERFACE))
+        {
+            scalar gathered = 0;
+            for (label q = 1; q < Q; ++q)
+            {
+                gathered += share_[n - offset_[q]];
+            }
+            mass_[n] += gathered;
+        }
+    }
+    spreadOverLiquid(f, spread);
+    for (const label n : keep)
+    {
+        type_[n] = INTERFACE;
+    }
+    for (const label n : cellNode)
+    {
+        label& t = type_[n];
+        if (t == TO_FILL)
+        {
+            t = LIQUID;
+            mass_[n] = rhoN[n];
+            ++nFilled_;
+        }
+        else if (t == TO_EMPTY)
+        {
+            t = GAS;
+            mass_[n] = 0;
+            ++nEmptied_;
+        }
+        else if (t == NEW_INTERFACE)
+        {
+            t = INTERFACE;
+        }
+    }
+
+    // Fill levels: of the interface nodes, clamped to [0, 1] for the
+    // exchange weights
+    for (const label n : cellNode)
+    {
+        const label t = type_[n];
+        if (t == LIQUID)
+        {
+            fill_[n] = 1;
+        }
+        else if (t == GAS)
+        {
+            fill_[n] = 0;
+        }
+        else if (t == INTERFACE)
+        {
+            scalar rho = 0;
+            for (label q = 0; q < Q; ++q)
+            {
+                rho += f[q*nBox + n];
+            }
+            fill_[n] = min(max(mass_[n]/rho, 0.0), 1.0);
+        }
+    }
+    exchangeTypes();
+    halo.exchange(fill_.data(), 1, nBox);
+    rebuild();
+}
+
+
+Foam::scalar Foam::lbmFreeSurface::mass(const scalar* f) const
+{
+    const label Q = vs_.Q();
+    const label nBox = lattice_.nBox();
+    scalar m = 0;
+    for (const label n : lattice_.cellNode())
+    {
+        const label t = type_[n];
+        if (t == LIQUID)
+        {
+            for (label q = 0; q < Q; ++q)
+            {
+                m += f[q*nBox + n];
+            }
+        }
+        else if (t == INTERFACE)
+        {
+            m += mass_[n];
+        }
+    }
+    return m;
+}
+
+
+Foam::string Foam::lbmFreeSurface::describe(const label n) const
+{
+    auto typeName = [](const label t)
+    {
+        return
+            t == LIQUID ? "liquid" : t == INTERFACE ? "interface"
+          : t == GAS ? "gas" : "wall";
+    };
+    string s =
+        word(typeName(type_[n])) + " node, mass " + Foam::name(mass_[n])
+      + ", fill level " + Foam::name(fill_[n]) + "; neighbours";
+    label nType[3] = {0, 0, 0};
+    for (label q = 1; q < vs_.Q(); ++q)
+    {
+        const label t = type_[n - offset_[q]];
+        nType[0] += (t == LIQUID);
+        nType[1] += (t == INTERFACE);
+        nType[2] += (t == GAS);
+    }
+    return
+        s + " " + Foam::name(nType[0]) + " liquid, " + Foam::name(nType[1])
+      + " interface, " + Foam::name(nType[2]) + " gas";
+}
+
+
+Foam::labelVector Foam::lbmFreeSurface::counts() const
+{
+    labelVector n(interface_.size(), nFilled_, nEmptied_);
+    reduce(n, sumOp<labelVector>());
+    return n;
+}
+
+
+Foam::scalar Foam::lbmFreeSurface::memoryBytes() const
+{
+    return
+        sizeof(label)*type_.size()
+      + sizeof(scalar)
+       *(mass_.size() + fill_.size() + rhoU_.size() + share_.size());
+}
+
+
+// ************************************************************************* //
