@@ -688,21 +688,24 @@ void Foam::latticeBoltzmannFluid::prepareStream()
     {
         boundaries_->update(units_, U_, p_, f.cdata());
     }
-    boundaries_->fill
-    (
-        f.data(),
-        porosity_.size() ? porosity_.cdata() : nullptr
-    );
     if (freeSurface_)
     {
-        // (after the halo: the gas slots next to this processor's
-        // interface nodes are its own to rebuild)
+        // After the halo: the gas slots next to this processor's interface
+        // nodes are its own to rebuild. Before the boundaries: a curved
+        // body's interpolated bounce-back reads the slot of the node
+        // beyond, which may be a rebuilt gas slot (the rebuild reads no
+        // slot the boundaries write)
         freeSurface_->reconstruct
         (
             f.data(),
             units_.accelerationToLattice(bodyAcceleration_)
         );
     }
+    boundaries_->fill
+    (
+        f.data(),
+        porosity_.size() ? porosity_.cdata() : nullptr
+    );
     prepared_ = true;
 }
 

@@ -90,6 +90,17 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
     // with the halo and the boundaries' wall slots
     scratch_ = current();
     halo_.exchangeSelected(scratch_.data(), nBox);
+    if (freeSurface_)
+    {
+        // (the gas's populations into the interface nodes, as the step
+        // rebuilds them; the mass exchange is the step's own)
+        freeSurface_->reconstruct
+        (
+            scratch_.data(),
+            units_.accelerationToLattice(bodyAcceleration_),
+            false
+        );
+    }
     boundaries_->fill
     (
         scratch_.data(),

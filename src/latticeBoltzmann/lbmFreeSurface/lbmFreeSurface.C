@@ -295,7 +295,12 @@ Foam::wordList Foam::lbmFreeSurface::stateFiles() const
 }
 
 
-void Foam::lbmFreeSurface::reconstruct(scalar* f, const vector& g)
+void Foam::lbmFreeSurface::reconstruct
+(
+    scalar* f,
+    const vector& g,
+    const bool exchange
+)
 {
     const label Q = vs_.Q();
     const label nBox = lattice_.nBox();
@@ -305,28 +310,20 @@ void Foam::lbmFreeSurface::reconstruct(scalar* f, const vector& g)
 
     // The mass each interface node exchanges, from the populations as
     // they left the collision (before any is rebuilt)
-    exchangeMass(f);
+    if (exchange)
+    {
+        exchangeMass(f);
+    }
 
-    // The density and velocity of every interface node first: a rebuilt
-    // population may replace one of a neighbouring interface node's
-    scalar* rhoN = rhoU_.data();
-    scalar* uN[3] =
-        {rhoU_.data() + nBox, rhoU_.data() + 2*nBox, rhoU_.data() + 3*nBox};
+    // (the rebuilt populations go into gas nodes' slots only: an interface
+    // node's own populations, its density and velocity, stay as they left
+    // the collision)
+    const bool gravity = (magSqr(g) > 0);
     for (const label x : interface_)
     {
         scalar rho;
         vector u;
         moments(f, x, g, rho, u);
-        rhoN[x] = rho;
-        uN[0][x] = u.x();
-        uN[1][x] = u.y();
-        uN[2][x] = u.z();
-    }
-
-    const bool gravity = (magSqr(g) > 0);
-    for (const label x : interface_)
-    {
-        const vector u(uN[0][x], uN[1][x], uN[2][x]);
         const scalar u2 = magSqr(u);
 
         // Where the gas pressure holds. The rebuilt populations set it at
@@ -372,7 +369,7 @@ void Foam::lbmFreeSurface::reconstruct(scalar* f, const vector& g)
             {
                 // x_mid - x_s, in lattice units (cs^2 = 1/3)
                 const vector d(-0.5*vector(c[q]) - surface);
-                rhoG += 3*rhoN[x]*(g & d);
+                rhoG += 3*rho*(g & d);
             }
             // f^eq_q + f^eq_-q at the gas density: the odd terms cancel
             const scalar cu = vector(c[q]) & u;

@@ -10,16 +10,16 @@
 #     a, default 0.05715 m, and height 2a: n^2 = 2) read off every written
 #     alpha.water: Z = x_front/a, the front being the water's length along
 #     the bottom cell row (the sum of alpha.water times dx, from the left
-#     wall), against T = t sqrt(2 g/a) (g = 9.81). Compared with their
-#     measurements as tabulated in Lethe's dam-break example (a = 2.25 in;
-#     ../shared reference: erosion-free-surface-outputs.md, section 6):
-#     prints one line per write "T Z Z_measured" where T is within the
-#     measured range, then "damBreak: front max relative error E over
-#     T in [1.4, 2.96]" and the same over the whole range; --png plots
+#     wall; in 3D its mean across the tank), against T = t sqrt(2 g/a)
+#     (g = 9.81). Compared with their measurements (Phil. Trans. R. Soc. A
+#     244, 312; as tabulated in Lethe's examples/multiphysics/dam-break,
+#     a = 2.25 in): prints one line per write "T Z Z_measured" where T is
+#     within the measured range, then "damBreak: front max relative error E
+#     over T in [1.4, 2.96]" and the same over the whole range; --png plots
 #     Z(T) with the measurements, and alpha.water at four writes.
 #
-#     The early measurements (T < 1.4) lag every computation: the gate of
-#     their tank took time to open (Martin & Moyce 1952, their section 4).
+#     Computations of this experiment commonly lead the early measurements:
+#     the gate of their tank took time to open.
 #------------------------------------------------------------------------------
 import os
 import sys
@@ -47,9 +47,10 @@ def front(case, a=0.05715, g=9.81):
             raise SystemExit('damBreak.py: no cell centres C in %s/%s: run '
                              'postProcess -func writeCellCentres -latestTime'
                              % (case, ts[-1]))
-        bottom = lat.grid(alpha)[:, 0, 0]
+        # (3D: the mean over the cells across the tank)
+        bottom = lat.grid(alpha)[:, 0, :]
         T.append(float(t) * np.sqrt(2 * g / a))
-        Z.append(np.nansum(bottom) * lat.dx / a)
+        Z.append(np.nansum(bottom) / bottom.shape[1] * lat.dx / a)
     return np.array(T), np.array(Z)
 
 

@@ -118,6 +118,33 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
         }
     }
 
+    // The boundaries that read only their own node's populations work
+    // where the surface meets them; a slip wall's specular reflection and
+    // a pressure patch's extrapolation read their neighbours', which may
+    // be gas nodes (not yet handled: refused rather than wrong)
+    {
+        const List<lbmBoundaries::patchKind>& kinds =
+            fluid_.boundaries().patchKinds();
+        const polyBoundaryMesh& patches = scene.mesh().boundaryMesh();
+        forAll(kinds, patchi)
+        {
+            const lbmBoundaries::patchKind k = kinds[patchi];
+            if (k == lbmBoundaries::SLIP || k == lbmBoundaries::PRESSURE)
+            {
+                FatalErrorInFunction
+                    << "freeSurface: patch " << patches[patchi].name()
+                    << " is a "
+                    << (k == lbmBoundaries::SLIP ? "slip" : "pressure")
+                    << " boundary of the water (0/U, 0/p), which the free"
+                    << " surface does not support yet." << nl
+                    << "    Allowed with freeSurface: walls (noSlip, also"
+                    << " moving: fixedValue U) and velocity inlets; the gas"
+                    << " pressure (constant/freeSurfaceProperties gasPressure)"
+                    << " acts on the water's surface" << exit(FatalError);
+            }
+        }
+    }
+
     const scalar gasPressure = dict_.getOrDefault<scalar>("gasPressure", 0);
     const scalar fillMargin = dict_.getOrDefault<scalar>("fillMargin", 1e-3);
     if (!std::isfinite(gasPressure))
