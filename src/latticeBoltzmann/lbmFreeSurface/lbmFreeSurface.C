@@ -116,6 +116,9 @@ Foam::lbmFreeSurface::lbmFreeSurface
     rhoU_(4*lattice.nBox(), 0.0),
     share_(lattice.nBox(), 0.0),
     offset_(vs.Q()),
+    owned_(lattice.nBox(), false),
+    stamp_(lattice.nBox(), 0),
+    epoch_(0),
     nFilled_(0),
     nEmptied_(0)
 {
@@ -124,6 +127,23 @@ Foam::lbmFreeSurface::lbmFreeSurface
         const labelVector& c = vs.c()[q];
         offset_[q] = lattice.offset(c.x(), c.y(), c.z());
     }
+    for (const label n : lattice.cellNode())
+    {
+        owned_[n] = true;
+    }
+    DynamicList<label> border;
+    for (const label n : lattice.cellNode())
+    {
+        for (label q = 1; q < vs.Q(); ++q)
+        {
+            if (!owned_[n - offset_[q]])
+            {
+                border.append(n);
+                break;
+            }
+        }
+    }
+    border_.transfer(border);
 }
 
 
@@ -448,14 +468,49 @@ void Foam::lbmFreeSurface::spreadOverLiquid(scalar* f, scalar dm) const
 }
 
 
+void Foam::lbmFreeSurface::collectNear()
+{
+    // Every node a conversion can change is an interface node, a
+    // neighbour of one, or (a neighbour of another processor's) on the
+    // border: the passes of convert run over these only
+    if (++epoch_ == labelMax)
+    {
+        stamp_ = 0;
+        epoch_ = 1;
+    }
+    near_.clear();
+    auto add = [this](const label n)
+    {
+        if (owned_[n] && stamp_[n] != epoch_)
+        {
+            stamp_[n] = epoch_;
+            near_.append(n);
+        }
+    };
+    const label Q = vs_.Q();
+    for (const label x : interface_)
+    {
+        add(x);
+        for (label q = 1; q < Q; ++q)
+        {
+            add(x - offset_[q]);
+        }
+    }
+    for (const label n : border_)
+    {
+        add(n);
+    }
+}
+
+
 void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
 {
     const label Q = vs_.Q();
     const label nBox = lattice_.nBox();
     const List<labelVector>& c = vs_.c();
     const scalarList& w = vs_.w();
-    const labelList& cellNode = lattice_.cellNode();
     const haloExchange& halo = lattice_.halo();
+    collectNear();
 
     scalar* rhoN = rhoU_.data();
     scalar* uN[3] =
@@ -495,7 +550,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
 
     // 2. Gas next to a filling node becomes interface; an emptying node
     //    next to a filling one stays interface
-    for (const label n : cellNode)
+    for (const label n : near_)
     {
         const label t = type_[n];
         if (t != GAS && t != TO_EMPTY)
@@ -516,7 +571,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
     // 3. New interface nodes at the equilibrium of their water
     //    neighbours' mean density and velocity; liquid next to an
     //    emptying node becomes interface (full)
-    for (const label n : cellNode)
+    for (const label n : near_)
     {
         const label t = type_[n];
         if (t == NEW_INTERFACE)
@@ -591,7 +646,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
     nEmptied_ = 0;
     DynamicList<label> keep;
     scalar spread = 0;
-    for (const label n : cellNode)
+    for (const label n : near_)
     {
         share_[n] = 0;
         const label t = type_[n];
@@ -667,7 +722,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
 
     // 5. Gather the shares (each receiver was counted by its giver) and
     //    set the new types
-    for (const label n : cellNode)
+    for (const label n : near_)
     {
         if (type_[n] & (INTERFACE | NEW_INTERFACE))
         {
@@ -680,11 +735,16 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
         }
     }
     spreadOverLiquid(f, spread);
+    // (share_ stays 0 outside near_: cleared where this step set it)
+    for (const label n : near_)
+    {
+        share_[n] = 0;
+    }
     for (const label n : keep)
     {
         type_[n] = INTERFACE;
     }
-    for (const label n : cellNode)
+    for (const label n : near_)
     {
         label& t = type_[n];
         if (t == TO_FILL)
@@ -707,7 +767,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
 
     // Fill levels: of the interface nodes, clamped to [0, 1] for the
     // exchange weights
-    for (const label n : cellNode)
+    for (const label n : near_)
     {
         const label t = type_[n];
         if (t == LIQUID)
