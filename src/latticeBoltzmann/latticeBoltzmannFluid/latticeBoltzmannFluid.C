@@ -812,6 +812,7 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
 (
     const scalar gasPressure,
     const scalar fillMargin,
+    const scalar surfaceTension,
     const scalarField& alpha
 )
 {
@@ -820,7 +821,7 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
         new lbmFreeSurface
         (
             lattice_, velocitySet_(), units_, obstacles_(), gasPressure,
-            fillMargin
+            fillMargin, surfaceTension
         )
     );
     scalarList& f = current();

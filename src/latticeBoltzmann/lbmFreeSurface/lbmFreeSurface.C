@@ -101,7 +101,8 @@ Foam::lbmFreeSurface::lbmFreeSurface
     const lbmUnits& units,
     const lbmObstacles& obstacles,
     const scalar gasPressure,
-    const scalar fillMargin
+    const scalar fillMargin,
+    const scalar surfaceTension
 )
 :
     lattice_(lattice),
@@ -110,6 +111,10 @@ Foam::lbmFreeSurface::lbmFreeSurface
     obstacles_(obstacles),
     rhoGas_(units.rhoLattice(gasPressure)),
     fillMargin_(fillMargin),
+    sigmaRho_
+    (
+        units.rhoLattice(surfaceTension/lattice.dx()) - units.rhoLattice(0)
+    ),
     type_(lattice.nBox(), NONE),
     mass_(lattice.nBox(), 0.0),
     fill_(lattice.nBox(), 0.0),
@@ -315,6 +320,88 @@ Foam::wordList Foam::lbmFreeSurface::stateFiles() const
 }
 
 
+Foam::scalar Foam::lbmFreeSurface::curvature(const label x) const
+{
+    const label Q = vs_.Q();
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+
+    // The axis nearest the normal
+    const scalar phi = fill_[x];
+    vector grad(Zero);
+    for (label q = 1; q < Q; ++q)
+    {
+        const label y = x + offset_[q];
+        grad += w[q]*(type_[y] == NONE ? phi : fill_[y])*vector(c[q]);
+    }
+    label d = 0;
+    for (label k = 1; k < 3; ++k)
+    {
+        if (mag(grad[k]) > mag(grad[d]))
+        {
+            d = k;
+        }
+    }
+    if (mag(grad[d]) < SMALL)
+    {
+        return 0;
+    }
+    // The tangential axes: two in 3D, one in 2D (the third has no nodes)
+    const bool is3D = (vs_.D() == 3);
+    const label t1 = (d + 1) % 3;
+    const label t2 = (d + 2) % 3;
+    labelVector ed(Zero), e1(Zero), e2(Zero);
+    ed[d] = 1;
+    e1[t1] = 1;
+    e2[t2] = 1;
+    if (!is3D && t1 == 2)
+    {
+        // (2D: the tangent is the in-plane axis)
+        e1 = e2;
+        e2 = Zero;
+    }
+    const label od = lattice_.offset(ed.x(), ed.y(), ed.z());
+    const label o1 = lattice_.offset(e1.x(), e1.y(), e1.z());
+    const label o2 = lattice_.offset(e2.x(), e2.y(), e2.z());
+
+    // Heights: the liquid in each column of 5 along d
+    scalar H[3][3];
+    const label jMax = (is3D ? 1 : 0);
+    for (label i = -1; i <= 1; ++i)
+    {
+        for (label j = -jMax; j <= jMax; ++j)
+        {
+            scalar h = 0;
+            for (label k = -2; k <= 2; ++k)
+            {
+                const label y = x + i*o1 + j*o2 + k*od;
+                const label t = type_[y];
+                if (t == NONE)
+                {
+                    return 0;
+                }
+                h += (t == LIQUID ? 1.0 : t == GAS ? 0.0 : fill_[y]);
+            }
+            H[i + 1][j + 1] = h;
+        }
+    }
+    if (!is3D)
+    {
+        const scalar hx = 0.5*(H[2][1] - H[0][1]);
+        const scalar hxx = H[2][1] - 2*H[1][1] + H[0][1];
+        return -hxx/pow(1 + sqr(hx), 1.5);
+    }
+    const scalar hx = 0.5*(H[2][1] - H[0][1]);
+    const scalar hy = 0.5*(H[1][2] - H[1][0]);
+    const scalar hxx = H[2][1] - 2*H[1][1] + H[0][1];
+    const scalar hyy = H[1][2] - 2*H[1][1] + H[1][0];
+    const scalar hxy = 0.25*(H[2][2] - H[2][0] - H[0][2] + H[0][0]);
+    return
+       -((1 + sqr(hy))*hxx + (1 + sqr(hx))*hyy - 2*hx*hy*hxy)
+       /pow(1 + sqr(hx) + sqr(hy), 1.5);
+}
+
+
 void Foam::lbmFreeSurface::reconstruct
 (
     scalar* f,
@@ -353,6 +440,10 @@ void Foam::lbmFreeSurface::reconstruct
         // link is the gas pressure carried hydrostatically from the
         // surface (at (fill - 1/2) dx along the normal n from the node)
         // to the link's middle, x - c_q/2: p = p_gas + rho g.(x_mid - x_s)
+        // The capillary pressure: sigma kappa above the gas's (Laplace)
+        const scalar rhoGasX =
+            rhoGas_ + (sigmaRho_ != 0 ? sigmaRho_*curvature(x) : 0);
+
         vector surface(Zero);
         if (gravity)
         {
@@ -384,7 +475,7 @@ void Foam::lbmFreeSurface::reconstruct
             {
                 continue;
             }
-            scalar rhoG = rhoGas_;
+            scalar rhoG = rhoGasX;
             if (gravity)
             {
                 // x_mid - x_s, in lattice units (cs^2 = 1/3)

@@ -31,6 +31,26 @@ namespace physicsEffects
 }
 
 
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::label Foam::physicsEffects::freeSurface::haloWidth(const fvMesh& mesh)
+{
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            "freeSurfaceProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    return (dict.getOrDefault<scalar>("surfaceTension", 0) > 0 ? 2 : 1);
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::IOobject Foam::physicsEffects::freeSurface::dictIO
@@ -147,6 +167,15 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
 
     const scalar gasPressure = dict_.getOrDefault<scalar>("gasPressure", 0);
     const scalar fillMargin = dict_.getOrDefault<scalar>("fillMargin", 1e-3);
+    const scalar surfaceTension =
+        dict_.getOrDefault<scalar>("surfaceTension", 0);
+    if (!(surfaceTension >= 0 && surfaceTension < GREAT))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "surfaceTension " << surfaceTension << " is not allowed: a"
+            << " finite, non-negative surface tension [N/m] (water-air"
+            << " 0.0728 at 20 C; 0: none)" << exit(FatalIOError);
+    }
     if (!std::isfinite(gasPressure))
     {
         FatalIOErrorInFunction(dict_)
@@ -177,13 +206,17 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
     {
         checkAlpha();
     }
-    fluid_.enableFreeSurface(gasPressure, fillMargin, alpha_);
+    fluid_.enableFreeSurface
+    (
+        gasPressure, fillMargin, surfaceTension, alpha_
+    );
     updateFields();
 
     const labelVector n = fluid_.freeSurface()->counts();
     Info<< "Free surface (Koerner et al. 2005): gas pressure " << gasPressure
-        << " Pa, fill margin " << fillMargin << ", " << n.x()
-        << " interface nodes" << nl << endl;
+        << " Pa, fill margin " << fillMargin << ", surface tension "
+        << surfaceTension << " N/m, " << n.x() << " interface nodes" << nl
+        << endl;
 }
 
 
