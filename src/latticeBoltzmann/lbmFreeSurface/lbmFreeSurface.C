@@ -320,6 +320,23 @@ Foam::wordList Foam::lbmFreeSurface::stateFiles() const
 }
 
 
+Foam::vector Foam::lbmFreeSurface::fillGradient(const label x) const
+{
+    const label Q = vs_.Q();
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+    const scalar phi = fill_[x];
+    vector grad(Zero);
+    for (label q = 1; q < Q; ++q)
+    {
+        const label y = x + offset_[q];
+        // (walls: no gradient across them)
+        grad += w[q]*(type_[y] == NONE ? phi : fill_[y])*vector(c[q]);
+    }
+    return grad;
+}
+
+
 Foam::scalar Foam::lbmFreeSurface::curvature(const label x) const
 {
     const label Q = vs_.Q();
@@ -327,13 +344,7 @@ Foam::scalar Foam::lbmFreeSurface::curvature(const label x) const
     const scalarList& w = vs_.w();
 
     // The axis nearest the normal
-    const scalar phi = fill_[x];
-    vector grad(Zero);
-    for (label q = 1; q < Q; ++q)
-    {
-        const label y = x + offset_[q];
-        grad += w[q]*(type_[y] == NONE ? phi : fill_[y])*vector(c[q]);
-    }
+    const vector grad(fillGradient(x));
     label d = 0;
     for (label k = 1; k < 3; ++k)
     {
@@ -448,14 +459,7 @@ void Foam::lbmFreeSurface::reconstruct
         if (gravity)
         {
             const scalar phi = fill_[x];
-            vector grad(Zero);
-            for (label q = 1; q < Q; ++q)
-            {
-                const label y = x + offset_[q];
-                // (walls: no gradient across them)
-                const scalar phiY = (type_[y] == NONE ? phi : fill_[y]);
-                grad += w[q]*phiY*vector(c[q]);
-            }
+            const vector grad(fillGradient(x));
             const scalar magGrad = mag(grad);
             if (magGrad > SMALL)
             {
