@@ -84,7 +84,9 @@ if __name__ == '__main__':
         ts = foamio.times(case)
         snaps = [ts[int(round(k*(len(ts) - 1)/3))] for k in range(4)]
         fig = plt.figure(figsize=(10, 4.2))
-        ax = fig.add_subplot(1, 2, 1)
+        grid = fig.add_gridspec(4, 3, width_ratios=[1.25, 1.25, 0.04],
+                                wspace=0.25, hspace=0.15)
+        ax = fig.add_subplot(grid[:, 0])
         ax.plot(T, Z, '-', label='mpmLbmFoam (free-surface LBM)')
         ax.plot(T_MM, Z_MM, 'o', label='Martin & Moyce 1952 ($n^2 = 2$)')
         ax.set_xlabel(r'$T = t\,\sqrt{2g/a}$')
@@ -94,15 +96,19 @@ if __name__ == '__main__':
         ax.legend()
         lat = foamio.Lattice(foamio.read(case, ts[-1], 'C'))
         for k, t in enumerate(snaps):
-            sub = fig.add_subplot(4, 2, 2*k + 2)
-            alpha = lat.grid(foamio.read(case, t, 'alpha.water'))[:, :, 0]
-            sub.imshow(alpha.T, origin='lower', cmap='Blues', vmin=0, vmax=1,
-                       extent=(0, lat.n[0]*lat.dx/a, 0, lat.n[1]*lat.dx/a))
+            sub = fig.add_subplot(grid[k, 1])
+            alpha = lat.grid(foamio.read(case, t, 'alpha.water'))
+            # (3D: the plane in the middle across the tank)
+            alpha = alpha[:, :, alpha.shape[2] // 2]
+            image = sub.imshow(alpha.T, origin='lower', cmap='Blues', vmin=0,
+                               vmax=1, extent=(0, lat.n[0]*lat.dx/a, 0,
+                                               lat.n[1]*lat.dx/a))
             sub.set_yticks([])
             sub.set_xticks([] if k < 3 else [0, 1, 2, 3, 4, 5, 6])
             sub.text(0.99, 0.9, 't = %s s' % t, transform=sub.transAxes,
                      ha='right', va='top', fontsize=8)
-        fig.axes[-1].set_xlabel('x/a (alpha.water)')
-        fig.tight_layout()
-        fig.savefig(png, dpi=110)
+        sub.set_xlabel('x/a')
+        bar = fig.colorbar(image, cax=fig.add_subplot(grid[:, 2]))
+        bar.set_label('alpha.water (water fraction, -)')
+        fig.savefig(png, dpi=110, bbox_inches='tight')
         print('Picture: %s' % png)
