@@ -142,7 +142,7 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
     forAll(cellNode, celli)
     {
         const label n = cellNode[celli];
-        if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
+        if (!water(n))
         {
             continue;
         }

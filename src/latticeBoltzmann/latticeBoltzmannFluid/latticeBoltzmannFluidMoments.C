@@ -114,7 +114,7 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
     sigma = Zero;
     for (const label n : lattice_.cellNode())
     {
-        if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
+        if (!water(n))
         {
             continue;
         }
@@ -162,7 +162,7 @@ Foam::vector Foam::latticeBoltzmannFluid::momentum() const
     vector j(Zero);
     for (const label n : lattice_.cellNode())
     {
-        if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
+        if (!water(n))
         {
             continue;
         }
@@ -313,7 +313,7 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
     u = Zero;
     for (const label n : lattice_.cellNode())
     {
-        if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
+        if (!water(n))
         {
             continue;
         }

@@ -67,6 +67,22 @@ void Foam::lbmFreeSurface::rebuild()
 }
 
 
+Foam::scalar Foam::lbmFreeSurface::density
+(
+    const scalar* f,
+    const label n
+) const
+{
+    const label nBox = lattice_.nBox();
+    scalar rho = 0;
+    for (label q = 0; q < vs_.Q(); ++q)
+    {
+        rho += f[q*nBox + n];
+    }
+    return rho;
+}
+
+
 void Foam::lbmFreeSurface::moments
 (
     const scalar* f,
@@ -173,11 +189,7 @@ void Foam::lbmFreeSurface::setFromFraction
         {
             continue;
         }
-        scalar rho = 0;
-        for (label q = 0; q < Q; ++q)
-        {
-            rho += f[q*nBox + n];
-        }
+        const scalar rho = density(f, n);
         const scalar a = alpha[celli];
         if (a >= 1)
         {
@@ -245,7 +257,6 @@ void Foam::lbmFreeSurface::readState(scalar* f)
     readNodeField(lattice_, "lbmFreeSurfaceType", t.data());
     readNodeField(lattice_, "lbmFreeSurfaceMass", mass_.data());
     const labelList& cellNode = lattice_.cellNode();
-    const label Q = vs_.Q();
     for (const label n : cellNode)
     {
         if (obstacles_.solid(n))
@@ -268,11 +279,7 @@ void Foam::lbmFreeSurface::readState(scalar* f)
                 << " written time" << exit(FatalError);
         }
         type_[n] = ti;
-        scalar rho = 0;
-        for (label q = 0; q < Q; ++q)
-        {
-            rho += f[q*nBox + n];
-        }
+        const scalar rho = density(f, n);
         if (ti == LIQUID)
         {
             mass_[n] = rho;
@@ -337,14 +344,13 @@ Foam::vector Foam::lbmFreeSurface::fillGradient(const label x) const
 }
 
 
-Foam::scalar Foam::lbmFreeSurface::curvature(const label x) const
+Foam::scalar Foam::lbmFreeSurface::curvature
+(
+    const label x,
+    const vector& grad
+) const
 {
-    const label Q = vs_.Q();
-    const List<labelVector>& c = vs_.c();
-    const scalarList& w = vs_.w();
-
     // The axis nearest the normal
-    const vector grad(fillGradient(x));
     label d = 0;
     for (label k = 1; k < 3; ++k)
     {
@@ -444,6 +450,16 @@ void Foam::lbmFreeSurface::reconstruct
         moments(f, x, g, rho, u);
         const scalar u2 = magSqr(u);
 
+        const vector grad
+        (
+            gravity || sigmaRho_ != 0 ? fillGradient(x) : vector::zero
+        );
+
+        // The gas pressure at the surface, raised by the capillary pressure
+        // sigma kappa (Laplace)
+        const scalar rhoGasX =
+            rhoGas_ + (sigmaRho_ != 0 ? sigmaRho_*curvature(x, grad) : 0);
+
         // Where the gas pressure holds. The rebuilt populations set it at
         // the middle of each link to the gas, wherever the surface lies in
         // the node: a shift of up to one cell, rho g dx of pressure in
@@ -451,21 +467,12 @@ void Foam::lbmFreeSurface::reconstruct
         // link is the gas pressure carried hydrostatically from the
         // surface (at (fill - 1/2) dx along the normal n from the node)
         // to the link's middle, x - c_q/2: p = p_gas + rho g.(x_mid - x_s)
-        // The capillary pressure: sigma kappa above the gas's (Laplace)
-        const scalar rhoGasX =
-            rhoGas_ + (sigmaRho_ != 0 ? sigmaRho_*curvature(x) : 0);
-
         vector surface(Zero);
-        if (gravity)
+        const scalar magGrad = mag(grad);
+        if (gravity && magGrad > SMALL)
         {
-            const scalar phi = fill_[x];
-            const vector grad(fillGradient(x));
-            const scalar magGrad = mag(grad);
-            if (magGrad > SMALL)
-            {
-                // n = -grad/|grad| points into the gas
-                surface = -(phi - 0.5)/magGrad*grad;
-            }
+            // n = -grad/|grad| points into the gas
+            surface = -(fill_[x] - 0.5)/magGrad*grad;
         }
 
         for (label q = 1; q < Q; ++q)
@@ -708,13 +715,8 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
                 if (type_[n - offset_[q]] == TO_EMPTY)
                 {
                     type_[n] = INTERFACE;
-                    scalar rho = 0;
-                    for (label p = 0; p < Q; ++p)
-                    {
-                        rho += f[p*nBox + n];
-                    }
-                    mass_[n] = rho;
-                    rhoN[n] = rho;
+                    mass_[n] = density(f, n);
+                    rhoN[n] = mass_[n];
                     break;
                 }
             }
@@ -743,7 +745,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
     scalar spread = 0;
     for (const label n : near_)
     {
-        share_[n] = 0;
+        // (share_ is 0 here: cleared after each gather)
         const label t = type_[n];
         scalar excess = 0;
         if (t == TO_FILL)
@@ -756,11 +758,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
         }
         else if (t == INTERFACE)
         {
-            scalar rho = 0;
-            for (label q = 0; q < Q; ++q)
-            {
-                rho += f[q*nBox + n];
-            }
+            const scalar rho = density(f, n);
             rhoN[n] = rho;
             const scalar m = mass_[n];
             excess = (m > rho ? m - rho : (m < 0 ? m : 0));
@@ -875,12 +873,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
         }
         else if (t == INTERFACE)
         {
-            scalar rho = 0;
-            for (label q = 0; q < Q; ++q)
-            {
-                rho += f[q*nBox + n];
-            }
-            fill_[n] = min(max(mass_[n]/rho, 0.0), 1.0);
+            fill_[n] = min(max(mass_[n]/density(f, n), 0.0), 1.0);
         }
     }
     exchangeTypes();

@@ -35,18 +35,7 @@ namespace physicsEffects
 
 Foam::label Foam::physicsEffects::freeSurface::haloWidth(const fvMesh& mesh)
 {
-    const IOdictionary dict
-    (
-        IOobject
-        (
-            "freeSurfaceProperties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    const IOdictionary dict(dictIO(mesh));
     return (dict.getOrDefault<scalar>("surfaceTension", 0) > 0 ? 2 : 1);
 }
 
@@ -55,14 +44,14 @@ Foam::label Foam::physicsEffects::freeSurface::haloWidth(const fvMesh& mesh)
 
 Foam::IOobject Foam::physicsEffects::freeSurface::dictIO
 (
-    physicsScene& scene
+    const fvMesh& mesh
 )
 {
     return IOobject
     (
         "freeSurfaceProperties",
-        scene.mesh().time().constant(),
-        scene.mesh(),
+        mesh.time().constant(),
+        mesh,
         IOobject::READ_IF_PRESENT,
         IOobject::NO_WRITE
     );
@@ -108,7 +97,7 @@ void Foam::physicsEffects::freeSurface::checkAlpha() const
 Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
 :
     physicsEffect(scene),
-    dict_(dictIO(scene)),
+    dict_(dictIO(scene.mesh())),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     alpha_
     (
