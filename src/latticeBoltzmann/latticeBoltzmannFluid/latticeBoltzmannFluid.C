@@ -808,6 +808,18 @@ void Foam::latticeBoltzmannFluid::step()
 }
 
 
+void Foam::latticeBoltzmannFluid::setStorage(const scalarList& storage)
+{
+    if (freeSurface_)
+    {
+        FatalErrorInFunction
+            << "the storage porosity is set after the free surface started"
+            << " from it: build the porous medium first" << abort(FatalError);
+    }
+    storage_ = storage;
+}
+
+
 void Foam::latticeBoltzmannFluid::enableFreeSurface
 (
     const scalar gasPressure,
@@ -820,10 +832,22 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
     (
         new lbmFreeSurface
         (
-            lattice_, velocitySet_(), units_, obstacles_(), gasPressure,
-            fillMargin, surfaceTension
+            lattice_, velocitySet_(), units_, obstacles_(), porosity_,
+            storage_.size() ? storage_ : porosity_,
+            gasPressure, fillMargin, surfaceTension
         )
     );
+    {
+        // The pressure patches' nodes, which must stay under the water
+        labelList nodes, patches;
+        boundaries_->pressureNodes(nodes, patches);
+        wordList names(patches.size());
+        forAll(patches, i)
+        {
+            names[i] = mesh_.boundaryMesh()[patches[i]].name();
+        }
+        freeSurface_->setPressureNodes(nodes, names);
+    }
     scalarList& f = current();
     if (restarted_)
     {

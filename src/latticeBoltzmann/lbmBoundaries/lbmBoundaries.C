@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "lbmBoundaries.H"
+#include "Map.H"
 #include "IFstream.H"
 #include "DynamicList.H"
 #include "emptyPolyPatch.H"
@@ -867,6 +868,27 @@ Foam::labelList Foam::lbmBoundaries::pressureNodes() const
     }
     nodes.setSize(nUnique);
     return nodes;
+}
+
+
+void Foam::lbmBoundaries::pressureNodes
+(
+    labelList& nodes,
+    labelList& patches
+) const
+{
+    // (a node's first link, in the order the links were collected)
+    Map<label> patchOf;
+    forAll(abbNode_, i)
+    {
+        patchOf.insert(abbNode_[i], abbPatch_[i]);
+    }
+    nodes = pressureNodes();
+    patches.setSize(nodes.size());
+    forAll(nodes, i)
+    {
+        patches[i] = patchOf[nodes[i]];
+    }
 }
 
 

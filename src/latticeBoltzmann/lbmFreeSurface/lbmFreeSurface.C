@@ -103,8 +103,9 @@ void Foam::lbmFreeSurface::moments
         rho += fq;
         j += fq*vector(c[q]);
     }
-    // Post-collision momentum is rho u + F/2 (Guo), F = rho g
-    u = j/rho - 0.5*g;
+    // Post-collision momentum is rho u + F/2 (Guo), F = n rho g (n the
+    // lattice's porosity, 1 without a medium)
+    u = j/rho - 0.5*porosity(n)*g;
 }
 
 
@@ -116,6 +117,8 @@ Foam::lbmFreeSurface::lbmFreeSurface
     const velocitySet& vs,
     const lbmUnits& units,
     const lbmObstacles& obstacles,
+    const scalarList& porosity,
+    const scalarList& storage,
     const scalar gasPressure,
     const scalar fillMargin,
     const scalar surfaceTension
@@ -125,6 +128,8 @@ Foam::lbmFreeSurface::lbmFreeSurface
     vs_(vs),
     units_(units),
     obstacles_(obstacles),
+    porosity_(porosity),
+    storage_(storage),
     rhoGas_(units.rhoLattice(gasPressure)),
     fillMargin_(fillMargin),
     sigmaRho_
@@ -194,7 +199,7 @@ void Foam::lbmFreeSurface::setFromFraction
         if (a >= 1)
         {
             type_[n] = LIQUID;
-            mass_[n] = rho;
+            mass_[n] = capacity(rho, n);
             fill_[n] = 1;
         }
         else if (a <= 0)
@@ -206,7 +211,7 @@ void Foam::lbmFreeSurface::setFromFraction
         else
         {
             type_[n] = INTERFACE;
-            mass_[n] = a*rho;
+            mass_[n] = a*capacity(rho, n);
             fill_[n] = a;
         }
     }
@@ -240,13 +245,15 @@ void Foam::lbmFreeSurface::setFromFraction
         const label n = cellNode[celli];
         if (type_[n] == GAS)
         {
+            const scalar rhoG = 1 + porosity(n)*(rhoGas_ - 1);
             for (label q = 0; q < Q; ++q)
             {
-                f[q*nBox + n] = w[q]*rhoGas_;
+                f[q*nBox + n] = w[q]*rhoG;
             }
         }
     }
     rebuild();
+    checkPressureNodes();
 }
 
 
@@ -279,10 +286,10 @@ void Foam::lbmFreeSurface::readState(scalar* f)
                 << " written time" << exit(FatalError);
         }
         type_[n] = ti;
-        const scalar rho = density(f, n);
+        const scalar C = capacity(density(f, n), n);
         if (ti == LIQUID)
         {
-            mass_[n] = rho;
+            mass_[n] = C;
             fill_[n] = 1;
         }
         else if (ti == GAS)
@@ -292,12 +299,13 @@ void Foam::lbmFreeSurface::readState(scalar* f)
         }
         else
         {
-            fill_[n] = min(max(mass_[n]/rho, 0.0), 1.0);
+            fill_[n] = min(max(mass_[n]/C, 0.0), 1.0);
         }
     }
     exchangeTypes();
     lattice_.halo().exchange(fill_.data(), 1, nBox);
     rebuild();
+    checkPressureNodes();
 }
 
 
@@ -448,7 +456,11 @@ void Foam::lbmFreeSurface::reconstruct
         scalar rho;
         vector u;
         moments(f, x, g, rho, u);
-        const scalar u2 = magSqr(u);
+        // (in a porous lattice: the equilibrium's second-order terms over
+        // n, the pressure that of the pores, c_s^2 (rho - 1)/n)
+        const scalar eps = porosity(x);
+        const scalar u2 = magSqr(u)/eps;
+        const scalar rhoPore = 1 + (rho - 1)/eps;
 
         const vector grad
         (
@@ -491,12 +503,16 @@ void Foam::lbmFreeSurface::reconstruct
             {
                 // x_mid - x_s, in lattice units (cs^2 = 1/3)
                 const vector d(-0.5*vector(c[q]) - surface);
-                rhoG += 3*rho*(g & d);
+                rhoG += 3*rhoPore*(g & d);
+            }
+            if (eps != 1)
+            {
+                rhoG = 1 + eps*(rhoG - 1);
             }
             // f^eq_q + f^eq_-q at the gas density: the odd terms cancel
             const scalar cu = vector(c[q]) & u;
             f[q*nBox + y] =
-                2*w[q]*rhoG*(1 + 4.5*cu*cu - 1.5*u2)
+                2*w[q]*rhoG*(1 + 4.5*cu*cu/eps - 1.5*u2)
               - f[opp[q]*nBox + x];
         }
     }
@@ -638,11 +654,12 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
             liquidNear = liquidNear || t == LIQUID;
         }
         const scalar m = mass_[x];
-        if (m > (1 + fillMargin_)*rho || !gasNear)
+        const scalar C = capacity(rho, x);
+        if (m > (1 + fillMargin_)*C || !gasNear)
         {
             type_[x] = TO_FILL;
         }
-        else if (m < -fillMargin_*rho || !liquidNear)
+        else if (m < -fillMargin_*C || !liquidNear)
         {
             type_[x] = TO_EMPTY;
         }
@@ -678,7 +695,9 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
         const label t = type_[n];
         if (t == NEW_INTERFACE)
         {
-            scalar rho = 0;
+            // (the mean of the pore densities, c_s^2 (rho - 1)/n the
+            // pressure: a porous lattice's density differs with n)
+            scalar rhoPore = 0;
             vector u(Zero);
             label k = 0;
             for (label q = 1; q < Q; ++q)
@@ -686,24 +705,26 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
                 const label y = n - offset_[q];
                 if (type_[y] & (INTERFACE | TO_FILL | TO_EMPTY))
                 {
-                    rho += rhoN[y];
+                    rhoPore += 1 + (rhoN[y] - 1)/porosity(y);
                     u += vector(uN[0][y], uN[1][y], uN[2][y]);
                     ++k;
                 }
             }
             // (k >= 1: a neighbour filled)
-            rho /= k;
+            const scalar eps = porosity(n);
+            const scalar rho = 1 + eps*(rhoPore/k - 1);
             u /= k;
-            const scalar u2 = magSqr(u);
+            const scalar u2 = magSqr(u)/eps;
             for (label q = 0; q < Q; ++q)
             {
                 const scalar cu = vector(c[q]) & u;
-                f[q*nBox + n] = w[q]*rho*(1 + 3*cu + 4.5*cu*cu - 1.5*u2);
+                f[q*nBox + n] =
+                    w[q]*rho*(1 + 3*cu + 4.5*cu*cu/eps - 1.5*u2);
             }
-            // Guo: the populations carry rho u + F/2
+            // Guo: the populations carry rho u + F/2, F = n rho g
             for (label q = 0; q < Q; ++q)
             {
-                f[q*nBox + n] += 1.5*w[q]*rho*(vector(c[q]) & g);
+                f[q*nBox + n] += 1.5*w[q]*eps*rho*(vector(c[q]) & g);
             }
             rhoN[n] = rho;
             mass_[n] = 0;
@@ -715,8 +736,8 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
                 if (type_[n - offset_[q]] == TO_EMPTY)
                 {
                     type_[n] = INTERFACE;
-                    mass_[n] = density(f, n);
-                    rhoN[n] = mass_[n];
+                    rhoN[n] = density(f, n);
+                    mass_[n] = capacity(rhoN[n], n);
                     break;
                 }
             }
@@ -750,7 +771,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
         scalar excess = 0;
         if (t == TO_FILL)
         {
-            excess = mass_[n] - rhoN[n];
+            excess = mass_[n] - capacity(rhoN[n], n);
         }
         else if (t == TO_EMPTY)
         {
@@ -758,10 +779,10 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
         }
         else if (t == INTERFACE)
         {
-            const scalar rho = density(f, n);
-            rhoN[n] = rho;
+            rhoN[n] = density(f, n);
+            const scalar C = capacity(rhoN[n], n);
             const scalar m = mass_[n];
-            excess = (m > rho ? m - rho : (m < 0 ? m : 0));
+            excess = (m > C ? m - C : (m < 0 ? m : 0));
         }
         if (excess == 0 && t != TO_EMPTY)
         {
@@ -843,7 +864,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
         if (t == TO_FILL)
         {
             t = LIQUID;
-            mass_[n] = rhoN[n];
+            mass_[n] = capacity(rhoN[n], n);
             ++nFilled_;
         }
         else if (t == TO_EMPTY)
@@ -873,12 +894,50 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
         }
         else if (t == INTERFACE)
         {
-            fill_[n] = min(max(mass_[n]/density(f, n), 0.0), 1.0);
+            fill_[n] = min(max(mass_[n]/capacity(density(f, n), n), 0.0), 1.0);
         }
     }
     exchangeTypes();
     halo.exchange(fill_.data(), 1, nBox);
     rebuild();
+    checkPressureNodes();
+}
+
+
+void Foam::lbmFreeSurface::setPressureNodes
+(
+    const labelList& nodes,
+    const wordList& patch
+)
+{
+    pressureNodes_ = nodes;
+    pressurePatch_ = patch;
+}
+
+
+void Foam::lbmFreeSurface::checkPressureNodes() const
+{
+    forAll(pressureNodes_, i)
+    {
+        const label n = pressureNodes_[i];
+        if (type_[n] == LIQUID)
+        {
+            continue;
+        }
+        const Time& runTime = lattice_.mesh().time();
+        FatalErrorInFunction
+            << "The water's surface meets the pressure patch "
+            << pressurePatch_[i] << " at " << lattice_.position(n)
+            << " (time " << runTime.timeName() << "): the node next to it is "
+            << (type_[n] == GAS ? "gas" : "an interface node") << "." << nl
+            << "    With freeSurface a pressure patch must lie under the"
+            << " water, one node or more below the surface: its links bring"
+            << " water the surface's mass balance does not count. Lower the"
+            << " patch (or give it below the surface only, e.g. on the"
+            << " floor of a reservoir, whose level its pressure then"
+            << " holds), or raise the water (0/alpha.water)"
+            << exit(FatalError);
+    }
 }
 
 
@@ -892,10 +951,12 @@ Foam::scalar Foam::lbmFreeSurface::mass(const scalar* f) const
         const label t = type_[n];
         if (t == LIQUID)
         {
+            scalar rho = 0;
             for (label q = 0; q < Q; ++q)
             {
-                m += f[q*nBox + n];
+                rho += f[q*nBox + n];
             }
+            m += capacity(rho, n);
         }
         else if (t == INTERFACE)
         {

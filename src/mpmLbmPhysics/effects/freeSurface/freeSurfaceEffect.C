@@ -14,6 +14,7 @@ License
 #include "freeSurfaceEffect.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
+#include "porousFlowEffect.H"
 #include "addToRunTimeSelectionTable.H"
 #include "addToMemberFunctionSelectionTable.H"
 
@@ -112,9 +113,8 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
         scene.mesh()
     )
 {
-    // The couplings do not yet know where the water is
-    for (const word e : {"drag", "porousFlow", "buoyancy", "erosion",
-        "scalarTransport"})
+    // The couplings with the soil do not yet know where the water is
+    for (const word e : {"drag", "buoyancy", "erosion", "scalarTransport"})
     {
         if (scene.has(e))
         {
@@ -123,33 +123,49 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
                 << " (constant/physicsProperties effects): the couplings"
                 << " would act on the gas as on water." << nl
                 << "    Allowed with freeSurface: fluid, gravity, soil"
-                << " (without a coupling)" << exit(FatalIOError);
+                << " (without a coupling), porousFlow with medium fixed"
+                << exit(FatalIOError);
+        }
+    }
+    if (scene.has("porousFlow"))
+    {
+        // (built first: the free surface starts from its porosity)
+        const physicsEffects::porousFlow& porous =
+            scene.effect<physicsEffects::porousFlow>("porousFlow");
+        if (porous.medium() != physicsEffects::porousFlow::mediumType::fixed)
+        {
+            FatalIOErrorInFunction(scene.dict())
+                << "freeSurface combines with porousFlow's medium fixed"
+                << " only (constant/porousFlowProperties medium "
+                << physicsEffects::porousFlow::mediumTypeNames
+                   [porous.medium()]
+                << "): the soil's couplings do not yet know where the"
+                << " water is" << exit(FatalIOError);
         }
     }
 
     // The boundaries that read only their own node's populations work
-    // where the surface meets them; a slip wall's specular reflection and
-    // a pressure patch's extrapolation read their neighbours', which may
-    // be gas nodes (not yet handled: refused rather than wrong)
+    // where the surface meets them, a pressure patch as long as its nodes
+    // stay liquid (checked at every step: lbmFreeSurface); a slip wall's
+    // specular reflection reads its neighbours', which may be gas nodes
+    // (not yet handled: refused rather than wrong)
     {
         const List<lbmBoundaries::patchKind>& kinds =
             fluid_.boundaries().patchKinds();
         const polyBoundaryMesh& patches = scene.mesh().boundaryMesh();
         forAll(kinds, patchi)
         {
-            const lbmBoundaries::patchKind k = kinds[patchi];
-            if (k == lbmBoundaries::SLIP || k == lbmBoundaries::PRESSURE)
+            if (kinds[patchi] == lbmBoundaries::SLIP)
             {
                 FatalErrorInFunction
                     << "freeSurface: patch " << patches[patchi].name()
-                    << " is a "
-                    << (k == lbmBoundaries::SLIP ? "slip" : "pressure")
-                    << " boundary of the water (0/U, 0/p), which the free"
-                    << " surface does not support yet." << nl
+                    << " is a slip boundary of the water (0/U), which the"
+                    << " free surface does not support yet." << nl
                     << "    Allowed with freeSurface: walls (noSlip, also"
-                    << " moving: fixedValue U) and velocity inlets; the gas"
-                    << " pressure (constant/freeSurfaceProperties gasPressure)"
-                    << " acts on the water's surface" << exit(FatalError);
+                    << " moving: fixedValue U), velocity inlets and pressure"
+                    << " patches under the water; the gas pressure"
+                    << " (constant/freeSurfaceProperties gasPressure) acts"
+                    << " on the water's surface" << exit(FatalError);
             }
         }
     }

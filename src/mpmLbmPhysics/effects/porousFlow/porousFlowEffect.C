@@ -64,14 +64,22 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
     soil_(nullptr),
     porosity_(1),
     permeability_(GREAT),
-    forchheimer_(0)
+    forchheimer_(0),
+    zoned_(false)
 {
-    if (fluid_.smagorinsky() > 0)
+    // (the Guo-Zhao lattice's equilibrium carries 1/n, which the
+    // sub-grid model's strain rate does not; a medium in a cell zone
+    // leaves the lattice clear water with a resistance, which it takes)
+    const bool inZone =
+        medium_ == mediumType::fixed
+     && dict_.optionalSubDict("fixedCoeffs").found("cellZone");
+    if (fluid_.smagorinsky() > 0 && !inZone)
     {
         FatalIOErrorInFunction(dict_)
             << "porousFlow does not combine with the Smagorinsky sub-grid"
             << " model (smagorinskyConstant " << fluid_.smagorinsky()
-            << " in fluidProperties): set it to 0" << exit(FatalIOError);
+            << " in fluidProperties): set it to 0, or give the fixed"
+            << " medium a cellZone" << exit(FatalIOError);
     }
 
     Info<< "Porous flow (Guo & Zhao 2002): medium " << mediumTypeNames[medium_];
@@ -106,8 +114,48 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
                 << "Forchheimer " << forchheimer_ << " is not allowed: it"
                 << " must be >= 0" << exit(FatalIOError);
         }
-        fluid_.setPorosity(scalarList(fluid_.lattice().nBox(), porosity_));
-        const scalar H = fluid_.lattice().dx();
+        const latticeMesh& lattice = fluid_.lattice();
+        zoned_ = coeffs.found("cellZone");
+        if (zoned_)
+        {
+            const word zoneName(coeffs.get<word>("cellZone"));
+            const cellZoneMesh& zones = scene.mesh().cellZones();
+            const label zonei = zones.findZoneID(zoneName);
+            if (zonei < 0)
+            {
+                FatalIOErrorInFunction(coeffs)
+                    << "cellZone " << zoneName << " is not a cell zone of"
+                    << " the mesh; its cell zones: " << zones.names() << nl
+                    << "    Make it with topoSet (a cellSet, then setToCellZone"
+                    << " or a cellZoneSet action)" << exit(FatalIOError);
+            }
+            const labelList& cells = zones[zonei];
+            if (returnReduce(cells.size(), sumOp<label>()) == 0)
+            {
+                FatalIOErrorInFunction(coeffs)
+                    << "cellZone " << zoneName << " holds no cell: the"
+                    << " medium would be nowhere" << exit(FatalIOError);
+            }
+            zoneNodes_.setSize(cells.size());
+            scalarList storage(lattice.nBox(), 1.0);
+            forAll(cells, i)
+            {
+                zoneNodes_[i] = lattice.cellNode()[cells[i]];
+                storage[zoneNodes_[i]] = porosity_;
+            }
+            // (the resistance as a relaxation of the force field)
+            fluid_.enableForceField();
+            fluid_.setStorage(storage);
+            Info<< " in cell zone " << zoneName << " ("
+                << returnReduce(cells.size(), sumOp<label>()) << " cells;"
+                << " the lattice carries its resistance, the porosity is"
+                << " its storage)";
+        }
+        else
+        {
+            fluid_.setPorosity(scalarList(lattice.nBox(), porosity_));
+        }
+        const scalar H = lattice.dx();
         Info<< ", porosity " << porosity_ << ", permeability "
             << permeability_ << " m2 (Darcy number K/dx^2 "
             << permeability_/sqr(H) << "), Forchheimer " << forchheimer_
@@ -201,15 +249,21 @@ void Foam::physicsEffects::porousFlow::setResistance()
 {
     const lbmUnits& units = fluid_.units();
     const scalar dt = units.dt();
-    const scalar darcy = porosity_*units.nu()/permeability_;
-    const scalar forch =
-        porosity_*forchheimer_/std::sqrt(permeability_);
+    // (per unit mass of the Guo-Zhao lattice's superficial momentum; in a
+    // zone the lattice carries no porosity: nu/K, see Description)
+    const scalar nLattice = (zoned_ ? 1 : porosity_);
+    const scalar darcy = nLattice*units.nu()/permeability_;
+    const scalar forch = nLattice*forchheimer_/std::sqrt(permeability_);
 
     if (forch > 0)
     {
         fluid_.nodalVelocity(velocity_, true);
     }
-    for (const label n : fluid_.lattice().cellNode())
+    for
+    (
+        const label n
+      : (zoned_ ? zoneNodes_ : fluid_.lattice().cellNode())
+    )
     {
         // (|u| superficial, as the lattice's velocity)
         const scalar a =
@@ -295,7 +349,8 @@ Foam::scalar Foam::physicsEffects::porousFlow::memoryBytes() const
 {
     return
         scalar(fluid_.lattice().nBox())
-       *(sizeof(scalar) + (forchheimer_ > 0 ? sizeof(vector) : 0));
+       *(sizeof(scalar) + (forchheimer_ > 0 ? sizeof(vector) : 0))
+      + scalar(zoneNodes_.size())*sizeof(label);
 }
 
 
