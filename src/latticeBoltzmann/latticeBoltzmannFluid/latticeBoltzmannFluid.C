@@ -695,10 +695,14 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         // body's interpolated bounce-back reads the slot of the node
         // beyond, which may be a rebuilt gas slot (the rebuild reads no
         // slot the boundaries write)
+        const scalar* drag[3] =
+            {dragX_.cdata(), dragY_.cdata(), dragZ_.cdata()};
         freeSurface_->reconstruct
         (
             f.data(),
-            units_.accelerationToLattice(bodyAcceleration_)
+            units_.accelerationToLattice(bodyAcceleration_),
+            true,
+            dragX_.size() ? drag : nullptr
         );
     }
     boundaries_->fill

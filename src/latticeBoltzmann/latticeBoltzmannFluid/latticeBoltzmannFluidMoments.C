@@ -94,11 +94,14 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
     {
         // (the gas's populations into the interface nodes, as the step
         // rebuilds them; the mass exchange is the step's own)
+        const scalar* drag[3] =
+            {dragX_.cdata(), dragY_.cdata(), dragZ_.cdata()};
         freeSurface_->reconstruct
         (
             scratch_.data(),
             units_.accelerationToLattice(bodyAcceleration_),
-            false
+            false,
+            dragX_.size() ? drag : nullptr
         );
     }
     boundaries_->fill
