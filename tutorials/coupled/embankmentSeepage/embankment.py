@@ -1,0 +1,179 @@
+#!/usr/bin/python3
+#------------------------------------------------------------------------------
+#   mpmLbmFoam: coupled material point / lattice Boltzmann soil-water solver
+#------------------------------------------------------------------------------
+# Script
+#     embankment.py CASE [--png FILE]
+#
+# Description
+#     The numbers of the embankment seepage read off every written time:
+#     - q/k [m], the discharge per unit width over the hydraulic conductivity
+#       k = K g/nu: the water's mass flux through vertical sections of the
+#       embankment (x = 0.8, 1.0, 1.2 m) over rho k; steady when the
+#       sections agree and stop changing. The phreatic line does not depend
+#       on k, q is proportional to it: q = (q/k) k for any sand;
+#     - the reservoir's level h1 (as it settles under the floor's pressure)
+#       and Casagrande's estimate of q/k for it (the flow net's classic
+#       approximation, Casagrande 1937, "Seepage through dams"; Das,
+#       Advanced Soil Mechanics, sec. 8): the phreatic line is a parabola
+#       entering 0.3 D upstream of where the level meets the upstream slope
+#       (D that wetted slope's horizontal length), d the horizontal
+#       distance from there to the downstream toe, beta the downstream
+#       slope's angle:
+#           a = sqrt(d^2 + H^2) - sqrt(d^2 - H^2 cot^2 beta),
+#           q/k = a sin^2 beta,  the exit point a sin(beta) above the toe;
+#     - the exit point: the highest wet node of the downstream slope.
+#     --png: the water (alpha.water) with the phreatic line, the Darcy
+#     velocity in the embankment and q/k against time.
+#------------------------------------------------------------------------------
+import os
+import sys
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.environ['MPMLBM_PROJECT_DIR'], 'tests', 'lib'))
+import foamio
+
+# The case's geometry (system/topoSetDict, blockMeshDict) and materials
+TOE_UP, CREST_UP, CREST_DOWN, TOE_DOWN, HEIGHT = 0.3, 0.7, 0.9, 1.5, 0.4
+K, NU, G, RHO = 1e-5, 5e-3, 9.81, 1000.0
+SECTIONS = (0.8, 1.0, 1.2)
+
+
+def inside(x, y):
+    """Whether a point is in the embankment."""
+    return ((y < HEIGHT) & (x > TOE_UP) & (x < TOE_DOWN)
+            & (y < x - TOE_UP)
+            & (y < HEIGHT * (TOE_DOWN - x) / (TOE_DOWN - CREST_DOWN)))
+
+
+def casagrande(H):
+    """q/k and the exit height for a reservoir level H (Casagrande 1937)."""
+    D = H * (CREST_UP - TOE_UP) / HEIGHT
+    xA = TOE_UP + D - 0.3 * D
+    d = TOE_DOWN - xA
+    beta = np.arctan(HEIGHT / (TOE_DOWN - CREST_DOWN))
+    a = np.sqrt(d ** 2 + H ** 2) - np.sqrt(d ** 2 - (H / np.tan(beta)) ** 2)
+    return a * np.sin(beta) ** 2, a * np.sin(beta)
+
+
+def read(case):
+    ts = foamio.times(case)
+    C = None
+    for t in reversed(ts):
+        if os.path.exists(os.path.join(case, t, 'C')):
+            C = foamio.read(case, t, 'C')
+            break
+    if C is None:
+        raise SystemExit('embankment.py: no cell centres C in %s: run '
+                         'postProcess -func writeCellCentres -latestTime' % case)
+    lat = foamio.Lattice(C)
+    k = K * G / NU
+    x, y = lat.axis(0), lat.axis(1)
+    cols = [int(np.argmin(abs(x - s))) for s in SECTIONS]
+    up = x < 0.2
+    rows = []
+    for t in ts[1:]:
+        a = lat.grid(foamio.read(case, t, 'alpha.water'))[:, :, 0]
+        U = lat.grid(np.asarray(foamio.read(case, t, 'U'))[:, 0])[:, :, 0]
+        rho = lat.grid(foamio.read(case, t, 'rho'))[:, :, 0]
+        q = (rho * U * a).sum(axis=1) * lat.dx / (RHO * k)
+        h1 = a[up, :].sum(axis=1).mean() * lat.dx
+        rows.append((float(t), q[cols], h1))
+    return lat, ts, rows
+
+
+def exit_height(lat, a):
+    """The highest wet node of the embankment's downstream face."""
+    x, y = lat.axis(0), lat.axis(1)
+    X, Y = np.meshgrid(x, y, indexing='ij')
+    emb = inside(X, Y)
+    face = emb & ~np.roll(emb, -1, axis=0) & (X > CREST_DOWN)
+    wet = face & (a > 0.5)
+    return Y[wet].max() + 0.5 * lat.dx if wet.any() else 0.0
+
+
+def main():
+    args = sys.argv[1:]
+    png = None
+    if '--png' in args:
+        i = args.index('--png')
+        png = args[i + 1]
+        del args[i:i + 2]
+    case = args[0] if args else '.'
+    lat, ts, rows = read(case)
+    t, q, h1 = rows[-1]
+    qMean = q.mean()
+    qC, exitC = casagrande(h1)
+    a = lat.grid(foamio.read(case, ts[-1], 'alpha.water'))[:, :, 0]
+    hExit = exit_height(lat, a)
+    change = abs(qMean / rows[-2][1].mean() - 1) if len(rows) > 1 else np.nan
+    print('embankment: t %g s, reservoir level h1 %.4f m' % (t, h1))
+    print('embankment: q/k through x = %s m: %s m (spread %.2f%%, change since '
+          'the last write %.2f%%)' % (', '.join('%g' % s for s in SECTIONS),
+                                      ', '.join('%.5f' % v for v in q),
+                                      100 * (q.max() - q.min()) / qMean, 100 * change))
+    print('embankment: exit point %.3f m above the toe (Casagrande %.3f m)'
+          % (hExit, exitC))
+    print('embankment: q/k %.5f m, Casagrande %.5f m (%+.1f%%); q = %.4e m2/s '
+          'for k = %.3g m/s' % (qMean, qC, 100 * (qMean / qC - 1),
+                               qMean * K * G / NU, K * G / NU))
+    if png:
+        plot(case, lat, ts, rows, a, qC, png)
+
+
+def plot(case, lat, ts, rows, a, qC, png):
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    x, y = lat.axis(0), lat.axis(1)
+    dx = lat.dx
+    U = np.asarray(foamio.read(case, ts[-1], 'U'))
+    Ux = lat.grid(U[:, 0])[:, :, 0]
+    Uy = lat.grid(U[:, 1])[:, :, 0]
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(9, 7.2),
+                                 gridspec_kw={'height_ratios': [1.25, 1]})
+    edges_x = np.append(x - 0.5 * dx, x[-1] + 0.5 * dx)
+    edges_y = np.append(y - 0.5 * dx, y[-1] + 0.5 * dx)
+    from matplotlib.colors import LinearSegmentedColormap
+    water = LinearSegmentedColormap.from_list('water', ['white', '#5b9bd5'])
+    m = ax.pcolormesh(edges_x, edges_y, a.T, cmap=water, vmin=0, vmax=1,
+                      shading='flat')
+    ax.plot([TOE_UP, CREST_UP, CREST_DOWN, TOE_DOWN],
+            [0, HEIGHT, HEIGHT, 0], color='saddlebrown', lw=2,
+            label='embankment (K = %g m2, n = 0.35)' % K)
+    ax.contour(x, y, a.T, levels=[0.5], colors='k', linewidths=1.2)
+    ax.plot([], [], 'k', lw=1.2, label='water surface, phreatic line (alpha.water = 0.5)')
+    X, Y = np.meshgrid(x, y, indexing='ij')
+    sel = inside(X, Y) & (a >= 1)
+    s = (slice(2, None, 5), slice(2, None, 5))
+    k = K * G / NU
+    ax.quiver(X[s][sel[s]], Y[s][sel[s]], Ux[s][sel[s]] / k, Uy[s][sel[s]] / k,
+              color='darkred', scale=4, width=0.0025,
+              label='Darcy velocity (u/k; scale: 1 = 0.25 m)')
+    for xs in SECTIONS:
+        ax.axvline(xs, color='0.5', lw=0.6, ls=':')
+    ax.set_xlim(edges_x[0], edges_x[-1])
+    ax.set_ylim(edges_y[0], edges_y[-1])
+    ax.set_aspect('equal')
+    ax.set_xlabel('x [m]')
+    ax.set_ylabel('y [m]')
+    ax.set_title('Seepage through a sand embankment at t = %s s' % ts[-1])
+    ax.legend(loc='upper right', fontsize=7)
+    fig.colorbar(m, ax=ax, label='alpha.water', shrink=0.7, ticks=[0, 0.5, 1])
+    t = np.array([r[0] for r in rows])
+    q = np.array([r[1] for r in rows])
+    for i, xs in enumerate(SECTIONS):
+        bx.plot(t, q[:, i], 'o-', ms=3, label='section x = %g m' % xs)
+    bx.axhline(qC, color='k', ls='--',
+               label='Casagrande (1937) for the settled level: %.4f m' % qC)
+    bx.set_xlabel('t [s]')
+    bx.set_ylabel('q/k [m]')
+    bx.set_title('Discharge per unit width over the conductivity')
+    bx.legend(fontsize=8)
+    bx.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+
+
+if __name__ == '__main__':
+    main()
