@@ -646,6 +646,13 @@ void Foam::latticeBoltzmannFluid::setPorosity
         }
         mass += rho;
     }
+    if (freeSurface_)
+    {
+        // (the water in the pores: each node's share of it as its fill
+        // level had it)
+        freeSurface_->resetMasses(f.cdata());
+        mass = freeSurface_->mass(f.cdata());
+    }
     mass0_ = returnReduce(mass, sumOp<scalar>());
     updateFields();
     Info<< "Porous flow: the water initialised with the pore pressure p"

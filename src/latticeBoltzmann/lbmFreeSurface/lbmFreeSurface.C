@@ -309,6 +309,19 @@ void Foam::lbmFreeSurface::readState(scalar* f)
 }
 
 
+void Foam::lbmFreeSurface::resetMasses(const scalar* f)
+{
+    for (const label n : lattice_.cellNode())
+    {
+        const label t = type_[n];
+        if (t == LIQUID || t == INTERFACE)
+        {
+            mass_[n] = fill_[n]*capacity(density(f, n), n);
+        }
+    }
+}
+
+
 void Foam::lbmFreeSurface::writeState() const
 {
     // The types, and the masses of the interface nodes (a liquid node's is

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "buoyancyEffect.H"
+#include "lbmFreeSurface.H"
 #include "nodeFieldIO.H"
 #include "caseChecks.H"
 #include "physicsScene.H"
@@ -212,6 +213,23 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         porosity_[n] = eps[n];
     }
 
+    // With a free surface: the gas's pressure in the gas (its populations
+    // are not the water's), no weight there; the share of water of each
+    // node (the fill level) takes the soil's pore-pressure force: dry soil
+    // feels none
+    const lbmFreeSurface* fs = fluid_.freeSurface();
+    if (fs)
+    {
+        for (const label n : cellNode)
+        {
+            if (fs->gas(n))
+            {
+                weight_[n] = Zero;
+                pressure_[n] = (fs->rhoGas() - 1)/3;
+            }
+        }
+    }
+
     // The streaming of a water at rest of density X gives node n the
     // impulse S(X) = sum_q w_q c_q X(n - c_q) = -c_s^2 grad(X), walls and
     // pressure boundaries included: the lattice's own gradient stencil.
@@ -241,9 +259,11 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         target_[n] = Fw;
 
         const scalar phi = 1 - porosity_[n];
-        if (phi > 0)
+        const scalar wet = (fs ? fs->fill(n) : 1);
+        if (phi > 0 && wet > 0)
         {
-            soilForce_[n] = (toNewton*phi)*cmptMultiply(gradScale_[n], D);
+            soilForce_[n] =
+                (toNewton*phi*wet)*cmptMultiply(gradScale_[n], D);
             maxForce_ = max(maxForce_, mag(soilForce_[n]));
         }
     }
@@ -268,6 +288,19 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
     {
         target_[n] += weight_[n] - 0.5*(weight_[n] + streamed_[n]);
     }
+    // (with a free surface, only the liquid nodes: the surface's nodes
+    // balance the lattice's own weight against the gas pressure rebuilt
+    // at their links, as in clear water, and the gas takes no force)
+    if (fs)
+    {
+        for (const label n : cellNode)
+        {
+            if (!fs->liquid(n))
+            {
+                target_[n] = Zero;
+            }
+        }
+    }
     List<vector>& X = applied_;
     label nSweeps = 1;
     if (!warm_)
@@ -282,6 +315,16 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         for (const label n : cellNode)
         {
             X[n] += target_[n] - 0.5*(X[n] + streamed_[n]);
+        }
+        if (fs)
+        {
+            for (const label n : cellNode)
+            {
+                if (!fs->liquid(n))
+                {
+                    X[n] = Zero;
+                }
+            }
         }
     }
     for (const label n : cellNode)

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dragEffect.H"
+#include "lbmFreeSurface.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
 #include "soilEffect.H"
@@ -195,13 +196,24 @@ void Foam::physicsEffects::drag::mapExchange()
     const scalar rhoF = units.rho0();
     const bool porous = fluid_.porous();
 
+    // With a free surface the drag acts only where there is water: in an
+    // interface node on its fill level's share of the node (the soil there
+    // feels fill times the drag of a full node; the water's own momentum
+    // is fill times the lattice node's, so its velocity changes as in a
+    // full node), not at all in the gas (dry soil)
+    const lbmFreeSurface* fs = fluid_.freeSurface();
+
     nodes_.clear();
     beta_.clear();
     eps_.clear();
+    fill_.clear();
     maxForce_ = 0;
     for (const label n : fluid_.lattice().cellNode())
     {
-        if (phi[n] <= 0)
+        // (below a thousandth of a node's water, none: the exchange
+        // divides by the water's mass)
+        const scalar fill = (fs ? fs->fill(n) : 1);
+        if (phi[n] <= 0 || fill < 1e-3)
         {
             if (!twoWay())
             {
@@ -226,6 +238,7 @@ void Foam::physicsEffects::drag::mapExchange()
             nodes_.append(n);
             beta_.append(beta);
             eps_.append(porous ? eps : 1);
+            fill_.append(fill);
             continue;
         }
 
@@ -275,10 +288,11 @@ void Foam::physicsEffects::drag::begin(const scalar deltaT)
         vector j, p, Fo;
         fluid_.streamedState(nodes_[k], rho, j, p, Fo);
         const scalar eps = eps_[k];
-        C_[k] = beta_[k]*rho*V;
-        waterMass_[k] = eps*units.rho0()*rho*V;
+        const scalar fill = fill_[k];
+        C_[k] = fill*beta_[k]*rho*V;
+        waterMass_[k] = fill*eps*units.rho0()*rho*V;
         waterVelocity_[k] = units.toPhysical(0.5*(p + j)/rho)/eps;
-        waterForce_[k] = toForce*((j - p) + Fo);
+        waterForce_[k] = (fill*toForce)*((j - p) + Fo);
         impulse_[k] = Zero;
     }
 }
@@ -335,7 +349,8 @@ void Foam::physicsEffects::drag::end()
     }
     forAll(nodes_, k)
     {
-        fluid_.setDragImpulse(nodes_[k], impulse_[k]/toImpulse);
+        // (on the lattice node, whose momentum is that of a full node)
+        fluid_.setDragImpulse(nodes_[k], impulse_[k]/(toImpulse*fill_[k]));
     }
 }
 
@@ -343,13 +358,13 @@ void Foam::physicsEffects::drag::end()
 Foam::scalar Foam::physicsEffects::drag::memoryBytes() const
 {
     // With the soil's solid fraction and velocity per node it maps;
-    // twoWay: per node with soil (at most every node) four scalars and
+    // twoWay: per node with soil (at most every node) five scalars and
     // three vectors
     return
         scalar(fluid_.lattice().nBox())
        *(
             sizeof(scalar) + 2*sizeof(vector)
-          + (twoWay() ? 4*sizeof(scalar) + 3*sizeof(vector) : 0)
+          + (twoWay() ? 5*sizeof(scalar) + 3*sizeof(vector) : 0)
         );
 }
 

@@ -113,34 +113,31 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
         scene.mesh()
     )
 {
-    // The couplings with the soil do not yet know where the water is
-    for (const word e : {"drag", "buoyancy", "erosion", "scalarTransport"})
+    // Erosion and a transported scalar do not yet know where the water is
+    for (const word e : {"erosion", "scalarTransport"})
     {
         if (scene.has(e))
         {
             FatalIOErrorInFunction(scene.dict())
                 << "freeSurface does not combine with " << e << " yet"
-                << " (constant/physicsProperties effects): the couplings"
-                << " would act on the gas as on water." << nl
-                << "    Allowed with freeSurface: fluid, gravity, soil"
-                << " (without a coupling), porousFlow with medium fixed"
-                << exit(FatalIOError);
+                << " (constant/physicsProperties effects): it would act on"
+                << " the gas as on water." << nl
+                << "    Allowed with freeSurface: fluid, gravity, soil,"
+                << " drag, porousFlow, buoyancy" << exit(FatalIOError);
         }
     }
     if (scene.has("porousFlow"))
     {
         // (built first: the free surface starts from its porosity)
-        const physicsEffects::porousFlow& porous =
-            scene.effect<physicsEffects::porousFlow>("porousFlow");
-        if (porous.medium() != physicsEffects::porousFlow::mediumType::fixed)
+        scene.effect<physicsEffects::porousFlow>("porousFlow");
+        if (fluid_.displacement())
         {
             FatalIOErrorInFunction(scene.dict())
-                << "freeSurface combines with porousFlow's medium fixed"
-                << " only (constant/porousFlowProperties medium "
-                << physicsEffects::porousFlow::mediumTypeNames
-                   [porous.medium()]
-                << "): the soil's couplings do not yet know where the"
-                << " water is" << exit(FatalIOError);
+                << "freeSurface does not combine with porousFlow's"
+                << " displacement yet (constant/porousFlowProperties"
+                << " displacement on): the water the soil pushes aside"
+                << " would be added to the gas too. Set it off"
+                << exit(FatalIOError);
         }
     }
 
