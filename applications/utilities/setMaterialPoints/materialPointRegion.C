@@ -38,6 +38,19 @@ void Foam::materialPointRegion::readGeostatic
     surfaceHeight_ = gd.get<scalar>("surface");
     K0_ = gd.get<scalar>("K0");
     waterRho_ = gd.getOrDefault<scalar>("waterDensity", 0);
+    // (default: the surface, whose own check follows)
+    waterTable_ = gd.getOrDefault<scalar>("waterTable", surfaceHeight_);
+    if
+    (
+        gd.found("waterTable")
+     && (!std::isfinite(waterTable_) || !(mag(waterTable_) <= 1e6))
+    )
+    {
+        FatalIOErrorInFunction(gd)
+            << "waterTable " << waterTable_ << " is not allowed: a finite"
+            << " height [m] along -gravity, as surface (the level of the"
+            << " pore water: dry soil above it)" << exit(FatalIOError);
+    }
     // (the buoyant unit weight rho - (1 - n) rho_w must not be negative:
     // 1e300 gave a stress no soil carries, and a trap in the first step)
     if (!(waterRho_ >= 0) || !(rho_ - (1 - porosity_)*waterRho_ >= 0))
@@ -112,7 +125,8 @@ Foam::materialPointRegion::materialPointRegion
     stress_(stressType::none),
     surfaceHeight_(0),
     K0_(1),
-    waterRho_(0)
+    waterRho_(0),
+    waterTable_(0)
 {
     if (!surface_->hasVolumeType())
     {
@@ -253,9 +267,15 @@ Foam::symmTensor Foam::materialPointRegion::initialStress
     {
         return Zero;
     }
+    // (above the water table the soil is dry: its own unit weight rho g;
+    // below it the buoyant one, (rho - (1 - n) rho_w) g)
     const scalar h = x & up;
-    const scalar gamma = (rho_ - (1 - porosity_)*waterRho_)*magG;
-    const scalar sv = gamma*min(h - surfaceHeight_, 0.0);
+    const scalar gammaDry = rho_*magG;
+    const scalar gammaWet = (rho_ - (1 - porosity_)*waterRho_)*magG;
+    const scalar table = min(waterTable_, surfaceHeight_);
+    const scalar sv =
+        gammaDry*min(max(h, table) - surfaceHeight_, 0.0)
+      + gammaWet*min(h - table, 0.0);
     const symmTensor vv = sqr(up);
     return sv*vv + K0_*sv*(symmTensor::I - vv);
 }
