@@ -270,6 +270,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     halo_(lattice.halo()),
     restarted_(false),
     porosityInitialised_(false),
+    storageFollowsPorosity_(true),
     displacedMass_(0),
     displacement_(false),
     mass0_(0),
@@ -564,13 +565,16 @@ void Foam::latticeBoltzmannFluid::addDisplacementSource
     {
         heldPorosity_[n] = held(n);
     }
+    // With a free surface: none in the gas (no water to push); a liquid
+    // or interface node's water (rho - (1 - n), or its mass) stays, its
+    // pressure rising with the source pushes it to the neighbours
     scalar added = 0;
     for (const label n : lattice_.cellNode())
     {
         const scalar heldNew = held(n);
         const scalar source = heldPorosity_[n] - heldNew;
         heldPorosity_[n] = heldNew;
-        if (source != 0)
+        if (source != 0 && !(freeSurface_ && freeSurface_->gas(n)))
         {
             for (label q = 0; q < Q; ++q)
             {
@@ -604,6 +608,16 @@ void Foam::latticeBoltzmannFluid::setPorosity
     for (const label n : lattice_.cellNode())
     {
         porosity_[n] = eps[n];
+    }
+    if (freeSurface_ && storageFollowsPorosity_)
+    {
+        // The free surface's storage: the porosity whose water the
+        // populations hold (with displacement less the predicted fall: the
+        // source raises rho as it lowers that porosity, and a node's water
+        // rho - (1 - n) stays)
+        storage_ =
+            (displacement_ && heldPorosity_.size())
+          ? heldPorosity_ : porosity_;
     }
     if (porosityInitialised_)
     {
@@ -702,14 +716,11 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         // body's interpolated bounce-back reads the slot of the node
         // beyond, which may be a rebuilt gas slot (the rebuild reads no
         // slot the boundaries write)
-        const scalar* drag[3] =
-            {dragX_.cdata(), dragY_.cdata(), dragZ_.cdata()};
+        setFreeSurfaceForces();
         freeSurface_->reconstruct
         (
             f.data(),
-            units_.accelerationToLattice(bodyAcceleration_),
-            true,
-            dragX_.size() ? drag : nullptr
+            units_.accelerationToLattice(bodyAcceleration_)
         );
     }
     boundaries_->fill
@@ -828,6 +839,7 @@ void Foam::latticeBoltzmannFluid::setStorage(const scalarList& storage)
             << " from it: build the porous medium first" << abort(FatalError);
     }
     storage_ = storage;
+    storageFollowsPorosity_ = false;
 }
 
 
@@ -839,12 +851,18 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
     const scalarField& alpha
 )
 {
+    // (the storage the free surface reads: a porous zone's, or the
+    // lattice's porosity, kept by setPorosity; empty: clear water)
+    if (storageFollowsPorosity_)
+    {
+        storage_ = porosity_;
+    }
     freeSurface_.reset
     (
         new lbmFreeSurface
         (
             lattice_, velocitySet_(), units_, obstacles_(), porosity_,
-            storage_.size() ? storage_ : porosity_,
+            storage_,
             gasPressure, fillMargin, surfaceTension
         )
     );
@@ -862,9 +880,11 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
     scalarList& f = current();
     if (restarted_)
     {
+        // (the fill levels are optional: recomputed from the masses where
+        // a time was written without them)
         for (const word& name : freeSurface_->stateFiles())
         {
-            if (!foundNodeField(lattice_, name))
+            if (name != "lbmFreeSurfaceFill" && !foundNodeField(lattice_, name))
             {
                 FatalErrorInFunction
                     << "The populations of time " << mesh_.time().timeName()
@@ -885,6 +905,22 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
 }
 
 
+void Foam::latticeBoltzmannFluid::setFreeSurfaceForces()
+{
+    if (Fx_.empty())
+    {
+        freeSurface_->setForces(nullptr);
+        return;
+    }
+    const scalar* forces[6] =
+    {
+        Fx_.cdata(), Fy_.cdata(), Fz_.cdata(),
+        dragX_.cdata(), dragY_.cdata(), dragZ_.cdata()
+    };
+    freeSurface_->setForces(forces);
+}
+
+
 void Foam::latticeBoltzmannFluid::updateInterface()
 {
     if (!freeSurface_)
@@ -892,6 +928,7 @@ void Foam::latticeBoltzmannFluid::updateInterface()
         return;
     }
     scalarList& f = current();
+    setFreeSurfaceForces();
     freeSurface_->convert
     (
         f.data(),

@@ -94,14 +94,12 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
     {
         // (the gas's populations into the interface nodes, as the step
         // rebuilds them; the mass exchange is the step's own)
-        const scalar* drag[3] =
-            {dragX_.cdata(), dragY_.cdata(), dragZ_.cdata()};
+        setFreeSurfaceForces();
         freeSurface_->reconstruct
         (
             scratch_.data(),
             units_.accelerationToLattice(bodyAcceleration_),
-            false,
-            dragX_.size() ? drag : nullptr
+            false
         );
     }
     boundaries_->fill
@@ -184,10 +182,13 @@ Foam::scalar Foam::latticeBoltzmannFluid::massDefect() const
     // Against the initial mass plus what the displacement source added.
     // With a free surface: the liquid's populations and the interface
     // nodes' masses, summed only when asked (a pass over the populations)
+    // (the free surface's water, rho - (1 - n) per liquid node, does not
+    // change with the displacement source: the source raises rho as the
+    // pores shrink)
     Vector2D<scalar> m
     (
         freeSurface_ ? freeSurface_->mass(current().cdata()) : stats_.mass,
-        displacedMass_
+        freeSurface_ ? 0 : displacedMass_
     );
     reduce(m, sumOp<Vector2D<scalar>>());
     return m.x()/(mass0_ + m.y()) - 1.0;
@@ -341,7 +342,10 @@ Foam::scalar Foam::latticeBoltzmannFluid::populationSum() const
 {
     if (freeSurface_)
     {
-        return freeSurface_->mass(current().cdata());
+        // (the liquid's populations and the interface nodes' masses as
+        // stored: what a restart reads back before the porosity of a soil
+        // is mapped again, which the water's mass itself depends on)
+        return freeSurface_->storedSum(current().cdata());
     }
     const label Q = velocitySet_->Q();
     const label nBox = lattice_.nBox();

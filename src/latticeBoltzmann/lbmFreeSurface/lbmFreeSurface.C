@@ -104,8 +104,9 @@ void Foam::lbmFreeSurface::moments
         j += fq*vector(c[q]);
     }
     // Post-collision momentum is rho u + F/2 (Guo), F = n rho g (n the
-    // lattice's porosity, 1 without a medium)
-    u = j/rho - 0.5*porosity(n)*g;
+    // lattice's porosity, 1 without a medium) and the other forces (a
+    // drag: in a soil the largest)
+    u = j/rho - 0.5*porosity(n)*g - 0.5*otherForce(n)/rho;
 }
 
 
@@ -148,6 +149,7 @@ Foam::lbmFreeSurface::lbmFreeSurface
     nFilled_(0),
     nEmptied_(0)
 {
+    setForces(nullptr);
     forAll(offset_, q)
     {
         const labelVector& c = vs.c()[q];
@@ -263,6 +265,15 @@ void Foam::lbmFreeSurface::readState(scalar* f)
     scalarList t(nBox, 0.0);
     readNodeField(lattice_, "lbmFreeSurfaceType", t.data());
     readNodeField(lattice_, "lbmFreeSurfaceMass", mass_.data());
+    // The interface nodes' fill levels as the run had them (in a soil the
+    // porosity they were taken with is mapped again only in the coming
+    // step, after the drag has used them)
+    scalarList writtenFill;
+    if (foundNodeField(lattice_, "lbmFreeSurfaceFill"))
+    {
+        writtenFill.setSize(nBox, 0.0);
+        readNodeField(lattice_, "lbmFreeSurfaceFill", writtenFill.data());
+    }
     const labelList& cellNode = lattice_.cellNode();
     for (const label n : cellNode)
     {
@@ -299,7 +310,10 @@ void Foam::lbmFreeSurface::readState(scalar* f)
         }
         else
         {
-            fill_[n] = min(max(mass_[n]/C, 0.0), 1.0);
+            fill_[n] =
+                writtenFill.size()
+              ? writtenFill[n]
+              : min(max(mass_[n]/C, 0.0), 1.0);
         }
     }
     exchangeTypes();
@@ -329,22 +343,28 @@ void Foam::lbmFreeSurface::writeState() const
     // a straight run's byte for byte)
     scalarList t(lattice_.nBox(), 0.0);
     scalarList m(lattice_.nBox(), 0.0);
+    scalarList phi(lattice_.nBox(), 0.0);
     forAll(t, n)
     {
         t[n] = type_[n];
         if (type_[n] == INTERFACE)
         {
             m[n] = mass_[n];
+            phi[n] = fill_[n];
         }
     }
     writeNodeField(lattice_, "lbmFreeSurfaceType", t.cdata());
     writeNodeField(lattice_, "lbmFreeSurfaceMass", m.cdata());
+    writeNodeField(lattice_, "lbmFreeSurfaceFill", phi.cdata());
 }
 
 
 Foam::wordList Foam::lbmFreeSurface::stateFiles() const
 {
-    return wordList({"lbmFreeSurfaceType", "lbmFreeSurfaceMass"});
+    return wordList
+    ({
+        "lbmFreeSurfaceType", "lbmFreeSurfaceMass", "lbmFreeSurfaceFill"
+    });
 }
 
 
@@ -444,8 +464,7 @@ void Foam::lbmFreeSurface::reconstruct
 (
     scalar* f,
     const vector& g,
-    const bool exchange,
-    const scalar* const* drag
+    const bool exchange
 )
 {
     const label Q = vs_.Q();
@@ -507,11 +526,7 @@ void Foam::lbmFreeSurface::reconstruct
         }
         // (the pores' pressure gradient: the lattice's force n rho g + F_d
         // acts on n times the pore water's)
-        vector gradP = rhoPore*g;
-        if (drag)
-        {
-            gradP += vector(drag[0][x], drag[1][x], drag[2][x])/eps;
-        }
+        const vector gradP = rhoPore*g + otherForce(x)/eps;
 
         for (label q = 1; q < Q; ++q)
         {
@@ -938,6 +953,15 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
 }
 
 
+void Foam::lbmFreeSurface::setForces(const scalar* const forces[6])
+{
+    for (label i = 0; i < 6; ++i)
+    {
+        forces_[i] = forces ? forces[i] : nullptr;
+    }
+}
+
+
 void Foam::lbmFreeSurface::setPressureNodes
 (
     const labelList& nodes,
@@ -998,6 +1022,25 @@ Foam::scalar Foam::lbmFreeSurface::mass(const scalar* f) const
         }
     }
     return m;
+}
+
+
+Foam::scalar Foam::lbmFreeSurface::storedSum(const scalar* f) const
+{
+    scalar sum = 0;
+    for (const label n : lattice_.cellNode())
+    {
+        const label t = type_[n];
+        if (t == LIQUID)
+        {
+            sum += density(f, n);
+        }
+        else if (t == INTERFACE)
+        {
+            sum += mass_[n];
+        }
+    }
+    return sum;
 }
 
 

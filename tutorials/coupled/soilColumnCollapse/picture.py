@@ -90,7 +90,13 @@ def main(argv):
     cloud = 'lagrangian/materialPoints'
     reader.MeshRegions = ['internalMesh'] \
         + ([cloud] if cloud in available else [])
-    reader.CellArrays = ['U']
+    # A free surface (the freeSurface effect): only the water's cells
+    # drawn, where alpha.water >= 0.5 (the air white)
+    import re
+    with open(os.path.join(caseDir, 'constant', 'physicsProperties')) as f:
+        scene = re.search(r'^\s*effects\s*\(([^)]*)\)', f.read(), re.M)
+    freeSurface = bool(scene) and 'freeSurface' in scene.group(1).split()
+    reader.CellArrays = ['U'] + (['alpha.water'] if freeSurface else [])
     reader.LagrangianArrays = []
 
     times = reader.TimestepValues
@@ -152,6 +158,15 @@ def main(argv):
         water.SliceType = 'Plane'
         water.SliceType.Origin = centre
         water.SliceType.Normal = [0.0, 0.0, 1.0]
+    if freeSurface:
+        water = pv.Threshold(Input=water)
+        water.Scalars = ['CELLS', 'alpha.water']
+        try:
+            water.LowerThreshold = 0.5
+            water.UpperThreshold = 2.0
+            water.ThresholdMethod = 'Between'
+        except AttributeError:
+            water.ThresholdRange = [0.5, 2.0]
     waterDisplay = pv.Show(water, view)
     waterDisplay.Representation = 'Surface'
     pv.ColorBy(waterDisplay, ('CELLS', 'U', 'Magnitude'))

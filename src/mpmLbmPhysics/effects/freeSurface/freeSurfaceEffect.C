@@ -130,15 +130,6 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
     {
         // (built first: the free surface starts from its porosity)
         scene.effect<physicsEffects::porousFlow>("porousFlow");
-        if (fluid_.displacement())
-        {
-            FatalIOErrorInFunction(scene.dict())
-                << "freeSurface does not combine with porousFlow's"
-                << " displacement yet (constant/porousFlowProperties"
-                << " displacement on): the water the soil pushes aside"
-                << " would be added to the gas too. Set it off"
-                << exit(FatalIOError);
-        }
     }
 
     // The boundaries that read only their own node's populations work

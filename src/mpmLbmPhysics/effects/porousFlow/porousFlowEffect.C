@@ -67,20 +67,6 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
     forchheimer_(0),
     zoned_(false)
 {
-    // (the Guo-Zhao lattice's equilibrium carries 1/n, which the
-    // sub-grid model's strain rate does not; a medium in a cell zone
-    // leaves the lattice clear water with a resistance, which it takes)
-    const bool inZone =
-        medium_ == mediumType::fixed
-     && dict_.optionalSubDict("fixedCoeffs").found("cellZone");
-    if (fluid_.smagorinsky() > 0 && !inZone)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "porousFlow does not combine with the Smagorinsky sub-grid"
-            << " model (smagorinskyConstant " << fluid_.smagorinsky()
-            << " in fluidProperties): set it to 0, or give the fixed"
-            << " medium a cellZone" << exit(FatalIOError);
-    }
 
     Info<< "Porous flow (Guo & Zhao 2002): medium " << mediumTypeNames[medium_];
     if (medium_ == mediumType::fixed)
