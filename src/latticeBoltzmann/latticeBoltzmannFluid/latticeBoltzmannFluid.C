@@ -709,6 +709,17 @@ void Foam::latticeBoltzmannFluid::prepareStream()
     {
         boundaries_->update(units_, U_, p_, f.cdata());
     }
+    if (writtenDrag_.size() && nSteps_ == 0 && dragX_.size())
+    {
+        // The last step's drag as the run wrote it (see writePopulations)
+        const label nBox = lattice_.nBox();
+        SubList<scalar>(dragX_, nBox) = SubList<scalar>(writtenDrag_, nBox);
+        SubList<scalar>(dragY_, nBox) =
+            SubList<scalar>(writtenDrag_, nBox, nBox);
+        SubList<scalar>(dragZ_, nBox) =
+            SubList<scalar>(writtenDrag_, nBox, 2*nBox);
+        writtenDrag_.clear();
+    }
     if (freeSurface_)
     {
         // After the halo: the gas slots next to this processor's interface
@@ -896,6 +907,16 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
             }
         }
         freeSurface_->readState(f.data());
+        if (foundNodeField(lattice_, "lbmDragX"))
+        {
+            // (applied at the first step: the drag's effect may be built
+            // after this one and clear it)
+            const label nBox = lattice_.nBox();
+            writtenDrag_.setSize(3*nBox, 0.0);
+            readNodeField(lattice_, "lbmDragX", writtenDrag_.data());
+            readNodeField(lattice_, "lbmDragY", writtenDrag_.data() + nBox);
+            readNodeField(lattice_, "lbmDragZ", writtenDrag_.data() + 2*nBox);
+        }
     }
     else
     {

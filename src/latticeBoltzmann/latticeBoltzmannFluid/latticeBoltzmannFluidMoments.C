@@ -416,6 +416,15 @@ void Foam::latticeBoltzmannFluid::writePopulations() const
     if (freeSurface_)
     {
         freeSurface_->writeState();
+        if (dragX_.size())
+        {
+            // The drag of the last step, whose half the populations carry:
+            // the next step's surface takes the water's velocity less it
+            // (a restart continues bit for bit)
+            writeNodeField(lattice_, "lbmDragX", dragX_.cdata());
+            writeNodeField(lattice_, "lbmDragY", dragY_.cdata());
+            writeNodeField(lattice_, "lbmDragZ", dragZ_.cdata());
+        }
     }
 
     if (boundaries_->hasAbsorbing())
