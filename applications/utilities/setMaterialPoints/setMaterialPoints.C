@@ -452,6 +452,18 @@ int main(int argc, char *argv[])
             restartManifest::stateTable state;
             state.set("soilPoints", points.size());
             state.set("soilMass", sum(points.m));
+            {
+                // The cloud's check sum as a run reads it back (written
+                // in ASCII at the case's precision, the values change):
+                // the solver compares it, also after decomposePar
+                materialPoints readBack;
+                readBack.read(mesh, runTime.timeName());
+                const HashTable<scalar> h = readBack.hashSums();
+                forAllConstIters(h, iter)
+                {
+                    state.set("cloudHash_" + iter.key(), iter.val());
+                }
+            }
             restartManifest::endWrite
             (
                 runTime,

@@ -332,6 +332,57 @@ void Foam::materialPoints::migrate
 }
 
 
+namespace
+{
+    // FNV-1a over the bytes of a value
+    template<class T>
+    inline void fnv(uint64_t& h, const T& value)
+    {
+        const unsigned char* b = reinterpret_cast<const unsigned char*>(&value);
+        for (size_t i = 0; i < sizeof(T); ++i)
+        {
+            h ^= b[i];
+            h *= 1099511628211ULL;
+        }
+    }
+}
+
+
+Foam::HashTable<Foam::scalar> Foam::materialPoints::hashSums() const
+{
+    HashTable<scalar> sums;
+    auto add = [&sums](const word& name, const auto& list)
+    {
+        scalar s = 0;
+        forAll(list, i)
+        {
+            uint64_t h = 14695981039346656037ULL;
+            fnv(h, list[i]);
+            s += scalar(h & 0xFFFF);
+        }
+        sums.set(name, s);
+    };
+    add("x", x);
+    add("U", v);
+    add("mass", m);
+    add("volume", V);
+    add("initialVolume", V0);
+    add("F", F);
+    add("stress", sigma);
+    add("plasticStrain", plasticStrain);
+    add("C", C);
+    add("material", material);
+    add("halfLength", halfLength);
+    add("porosity", porosity);
+    add("origId", id);
+    if (carriesFines)
+    {
+        add("fines", fines);
+    }
+    return sums;
+}
+
+
 bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
 {
     IOobject posIO

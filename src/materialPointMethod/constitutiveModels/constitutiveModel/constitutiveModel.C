@@ -100,13 +100,23 @@ Foam::constitutiveModel::constitutiveModel
     lambda_(0),
     M_(0)
 {
-    if (!(rho_ > 0))
+    // (upper bounds beyond any soil or rock, osmium 22590 kg/m3, diamond
+    // 1.2e12 Pa: 1e300 passed and the soil's step underflowed to 1e-144)
+    if (!(rho_ > 0 && rho_ <= 1e5))
     {
-        notAllowed(dict, "rho", rho_, "the density must be > 0 [kg/m3]");
+        notAllowed
+        (
+            dict, "rho", rho_,
+            "the density must lie in (0, 1e5] kg/m3 (the solid's mass per"
+            " mixture volume, phi rho_s)"
+        );
     }
-    if (!(E_ > 0))
+    if (!(E_ > 0 && E_ <= 1e13))
     {
-        notAllowed(dict, "E", E_, "Young's modulus must be > 0 [Pa]");
+        notAllowed
+        (
+            dict, "E", E_, "Young's modulus must lie in (0, 1e13] Pa"
+        );
     }
     if (!(nu_ > -1 && nu_ < 0.5))
     {
