@@ -739,6 +739,11 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         f.data(),
         porosity_.size() ? porosity_.cdata() : nullptr
     );
+    if (freeSurface_)
+    {
+        // (what the walls and inlets send the surface's nodes)
+        freeSurface_->exchangeBoundaryMass(f.cdata());
+    }
     prepared_ = true;
 }
 

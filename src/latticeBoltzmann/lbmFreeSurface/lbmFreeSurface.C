@@ -593,6 +593,30 @@ void Foam::lbmFreeSurface::exchangeMass(const scalar* f)
 }
 
 
+void Foam::lbmFreeSurface::exchangeBoundaryMass(const scalar* f)
+{
+    const label Q = vs_.Q();
+    const label nBox = lattice_.nBox();
+    const labelList& opp = vs_.opp();
+
+    // (the boundary supplies water: the whole population, as a liquid
+    // neighbour's)
+    for (const label x : interface_)
+    {
+        scalar dm = 0;
+        for (label q = 1; q < Q; ++q)
+        {
+            const label y = x - offset_[q];
+            if (type_[y] == NONE)
+            {
+                dm += f[q*nBox + y] - f[opp[q]*nBox + x];
+            }
+        }
+        mass_[x] += dm;
+    }
+}
+
+
 void Foam::lbmFreeSurface::spreadOverLiquid(scalar* f, scalar dm) const
 {
     // Collective: every rank takes part, with or without a share (the
