@@ -560,7 +560,11 @@ void Foam::lbmFreeSurface::reconstruct
 }
 
 
-void Foam::lbmFreeSurface::exchangeMass(const scalar* f)
+void Foam::lbmFreeSurface::exchangeMass
+(
+    const scalar* f,
+    const bool boundaryLinks
+)
 {
     const label Q = vs_.Q();
     const label nBox = lattice_.nBox();
@@ -574,7 +578,13 @@ void Foam::lbmFreeSurface::exchangeMass(const scalar* f)
             const label y = x - offset_[q];
             const label t = type_[y];
             scalar s = 0;
-            if (t == LIQUID)
+            if (boundaryLinks)
+            {
+                // (a boundary supplies water: the whole population, as a
+                // liquid neighbour's)
+                s = (t == NONE);
+            }
+            else if (t == LIQUID)
             {
                 s = 1;
             }
@@ -582,11 +592,10 @@ void Foam::lbmFreeSurface::exchangeMass(const scalar* f)
             {
                 s = 0.5*(fill_[x] + fill_[y]);
             }
-            else
+            if (s != 0)
             {
-                continue;
+                dm += s*(f[q*nBox + y] - f[opp[q]*nBox + x]);
             }
-            dm += s*(f[q*nBox + y] - f[opp[q]*nBox + x]);
         }
         mass_[x] += dm;
     }
@@ -595,25 +604,7 @@ void Foam::lbmFreeSurface::exchangeMass(const scalar* f)
 
 void Foam::lbmFreeSurface::exchangeBoundaryMass(const scalar* f)
 {
-    const label Q = vs_.Q();
-    const label nBox = lattice_.nBox();
-    const labelList& opp = vs_.opp();
-
-    // (the boundary supplies water: the whole population, as a liquid
-    // neighbour's)
-    for (const label x : interface_)
-    {
-        scalar dm = 0;
-        for (label q = 1; q < Q; ++q)
-        {
-            const label y = x - offset_[q];
-            if (type_[y] == NONE)
-            {
-                dm += f[q*nBox + y] - f[opp[q]*nBox + x];
-            }
-        }
-        mass_[x] += dm;
-    }
+    exchangeMass(f, true);
 }
 
 
