@@ -12,8 +12,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialPointSoil.H"
-#include "restartManifest.H"
-#include "IFstream.H"
 #include "selectEntry.H"
 #include "volFields.H"
 
@@ -949,67 +947,6 @@ Foam::scalar Foam::materialPointSoil::kineticEnergy() const
         reduce(e, sumOp<scalar>());
     }
     return e;
-}
-
-
-void Foam::materialPointSoil::checkAgainstWriter() const
-{
-    // The points as setMaterialPoints wrote them: its manifest records a
-    // check sum per cloud file, summed over the points, which decomposePar
-    // carries to every processor folder. A processor's cloud edited or
-    // damaged after decomposePar has no file check sum to find it: these
-    // do (serially the files' own check sums report an edit too)
-    const Time& runTime = mesh_.time();
-    const fileName path
-    (
-        runTime.timePath()/"uniform"/restartManifest::manifestName
-    );
-    label found = isFile(path);
-    reduce(found, maxOp<label>());
-    if (!found)
-    {
-        return;
-    }
-    dictionary written;
-    if (isFile(path))
-    {
-        IFstream is(path);
-        written = dictionary(is);
-    }
-    Pstream::scatter(written);
-    if
-    (
-        written.getOrDefault<word>("writer", word::null) != "setMaterialPoints"
-     || !written.found("global")
-    )
-    {
-        return;
-    }
-    const dictionary& global = written.subDict("global");
-    HashTable<scalar> sums(points_.hashSums());
-    wordList differ;
-    for (const word& name : sums.sortedToc())
-    {
-        const word key("cloudHash_" + name);
-        const scalar here = returnReduce(sums[name], sumOp<scalar>());
-        if (global.found(key) && here != global.get<scalar>(key))
-        {
-            differ.append(name);
-        }
-    }
-    if (differ.size())
-    {
-        WarningInFunction
-            << "The material points' " << differ << " in "
-            << runTime.timeName()/"lagrangian"/materialPoints::cloudName
-            << (Pstream::parRun() ? " (in the processor folders)" : "")
-            << " differ from what setMaterialPoints wrote (" << path.name()
-            << " of that time): edited, or damaged after it (e.g. after"
-            << " decomposePar)." << nl
-            << "    They are read as they are now; run setMaterialPoints"
-            << (Pstream::parRun() ? " and decomposePar" : "")
-            << " again for its points" << nl << endl;
-    }
 }
 
 
