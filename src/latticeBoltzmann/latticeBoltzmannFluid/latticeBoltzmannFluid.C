@@ -500,20 +500,17 @@ void Foam::latticeBoltzmannFluid::enableGivenDrag()
 }
 
 
-Foam::vector Foam::latticeBoltzmannFluid::nodeForce
-(
-    const label n,
-    const scalar rho
-) const
+Foam::vector Foam::latticeBoltzmannFluid::nodeForce(const label n) const
 {
     const vector g = units_.accelerationToLattice(bodyAcceleration_);
+    // (the water's weight, rho_0 g: lbmKernel.H)
     if (Fx_.empty())
     {
-        return rho*g;
+        return g;
     }
     const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
     return
-        eps*rho*g
+        eps*g
       + vector(Fx_[n], Fy_[n], Fz_[n])
       + vector(dragX_[n], dragY_[n], dragZ_[n]);
 }
@@ -600,7 +597,7 @@ void Foam::latticeBoltzmannFluid::streamedState
         p += f[q*nBox + n]*cq;
     }
     const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
-    Fo = eps*rho*units_.accelerationToLattice(bodyAcceleration_);
+    Fo = eps*units_.accelerationToLattice(bodyAcceleration_);
     if (Fx_.size())
     {
         Fo += vector(Fx_[n], Fy_[n], Fz_[n]);
@@ -697,7 +694,7 @@ void Foam::latticeBoltzmannFluid::startAtForceBalance()
         {
             rho += f[q*nBox + n];
         }
-        vector F = (porosity_.size() ? porosity_[n] : 1.0)*rho*g;
+        vector F = (porosity_.size() ? porosity_[n] : 1.0)*g;
         if (Fx_.size())
         {
             F += vector(Fx_[n], Fy_[n], Fz_[n]);

@@ -127,7 +127,7 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
             rho += f[q];
             j += f[q]*vector(c[q]);
         }
-        const vector F = nodeForce(n, rho);
+        const vector F = nodeForce(n);
         const vector u = (j + 0.5*F)/rho;
         const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
         const scalar u2 = magSqr(u)/eps;
@@ -255,7 +255,7 @@ void Foam::latticeBoltzmannFluid::updateFields()
         // Post-collision momentum is rho u + F/2. In a porous medium u is
         // the superficial velocity (the Darcy flux) and p the pore
         // pressure c_s^2 (rho - 1)/eps (relative to the reference)
-        const vector F = nodeForce(n, rho);
+        const vector F = nodeForce(n);
         const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
         U[celli] = units_.toPhysical((j - 0.5*F)/rho);
         p[celli] = units_.pressure(rho)/eps;
@@ -331,7 +331,7 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
         }
         if (!carried)
         {
-            j -= 0.5*nodeForce(n, rho);
+            j -= 0.5*nodeForce(n);
         }
         u[n] = units_.toPhysical(j/rho);
     }

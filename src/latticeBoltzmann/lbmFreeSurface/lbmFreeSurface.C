@@ -102,10 +102,10 @@ void Foam::lbmFreeSurface::moments
         rho += fq;
         j += fq*vector(c[q]);
     }
-    // Post-collision momentum is rho u + F/2 (Guo), F = n rho g (n the
+    // Post-collision momentum is rho u + F/2 (Guo), F = n rho_0 g (n the
     // lattice's porosity, 1 without a medium) and the other forces (a
     // drag: in a soil the largest)
-    u = j/rho - 0.5*porosity(n)*g - 0.5*otherForce(n)/rho;
+    u = j/rho - 0.5*(porosity(n)*g + otherForce(n))/rho;
 }
 
 
@@ -301,7 +301,6 @@ void Foam::lbmFreeSurface::reconstruct
         // n, the pressure that of the pores, c_s^2 (rho - 1)/n)
         const scalar eps = porosity(x);
         const scalar u2 = magSqr(u)/eps;
-        const scalar rhoPore = 1 + (rho - 1)/eps;
 
         const vector grad
         (
@@ -332,9 +331,9 @@ void Foam::lbmFreeSurface::reconstruct
             // n = -grad/|grad| points into the gas
             surface = -(fill_[x] - 0.5)/magGrad*grad;
         }
-        // (the pores' pressure gradient: the lattice's force n rho g + F_d
+        // (the pores' pressure gradient: the lattice's force n rho_0 g + F_d
         // acts on n times the pore water's)
-        const vector gradP = rhoPore*g + otherForce(x)/eps;
+        const vector gradP = g + otherForce(x)/eps;
 
         for (label q = 1; q < Q; ++q)
         {

@@ -208,7 +208,7 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         {
             rho += f[q*nBox + n];
         }
-        weight_[n] = eps[n]*rho*g;
+        weight_[n] = eps[n]*g;
         pressure_[n] = (rho - 1)/(3*eps[n]);
         porosity_[n] = eps[n];
     }
