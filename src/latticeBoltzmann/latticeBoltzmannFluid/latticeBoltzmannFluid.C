@@ -560,12 +560,16 @@ void Foam::latticeBoltzmannFluid::prepareStream()
     boundaries_->fill
     (
         f.data(),
-        porosity_.size() ? porosity_.cdata() : nullptr
+        porosity_.size() ? porosity_.cdata() : nullptr,
+        freeSurface_.get(),
+        units_.accelerationToLattice(bodyAcceleration_)
     );
     if (freeSurface_)
     {
-        // (what the walls and inlets send the surface's nodes)
+        // (what the walls, inlets and pressure patches send the surface's
+        // nodes)
         freeSurface_->exchangeBoundaryMass(f.cdata());
+        freeSurface_->pressureLinkMass(f.cdata(), boundaries_());
     }
     prepared_ = true;
 }

@@ -41,17 +41,8 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
             gasPressure, fillMargin, surfaceTension
         )
     );
-    {
-        // The pressure patches' nodes, which must stay under the water
-        labelList nodes, patches;
-        boundaries_->pressureNodes(nodes, patches);
-        wordList names(patches.size());
-        forAll(patches, i)
-        {
-            names[i] = mesh_.boundaryMesh()[patches[i]].name();
-        }
-        freeSurface_->setPressureNodes(nodes, names);
-    }
+    // (a pressure patch's value at or below the gas's is air outside)
+    boundaries_->setGasPressure(gasPressure, p_, units_);
     scalarList& f = current();
     if (restarted_)
     {

@@ -105,7 +105,9 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
     boundaries_->fill
     (
         scratch_.data(),
-        porosity_.size() ? porosity_.cdata() : nullptr
+        porosity_.size() ? porosity_.cdata() : nullptr,
+        freeSurface_.get(),
+        units_.accelerationToLattice(bodyAcceleration_)
     );
 
     const scalar factor = 1 - 0.5/units_.tau();

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "lbmBoundaries.H"
+#include "lbmFreeSurface.H"
 #include "Map.H"
 #include "IFstream.H"
 #include "DynamicList.H"
@@ -292,6 +293,7 @@ Foam::lbmBoundaries::lbmBoundaries
 :
     lattice_(lattice),
     vs_(vs),
+    gasPressure_(-GREAT),
     nUnclassified_(0)
 {
     classifyPatches(U, p, units);
@@ -309,8 +311,8 @@ Foam::lbmBoundaries::lbmBoundaries
     DynamicList<label> copyGhost, copySource;
     DynamicList<scalar> copyValue;
     DynamicList<label> abbGhost, abbSource, abbNode, abbDir;
-    DynamicList<scalar> abbRho, abbWeightB;
-    DynamicList<label> abbFaceB;
+    DynamicList<scalar> abbRho;
+    DynamicList<FixedList<label, 4>> abbFaces;
     DynamicList<label> copyPatch, abbPatch;
     DynamicList<label> bodyGhost, bodyA, bodyB, bodyOf;
     DynamicList<scalar> bodyWa, bodyWb, bodyFraction;
@@ -412,19 +414,18 @@ Foam::lbmBoundaries::lbmBoundaries
                     abbSource.append(opp[q]*nBox + x);
                     abbNode.append(x);
                     abbDir.append(q);
-                    const Tuple2<label, scalar> faceB =
-                        crossingFace(x, q, fa.second(), patchi);
-                    abbFaceB.append(faceB.first());
-                    abbWeightB.append(faceB.second());
-                    const scalarField& pPatch = p.boundaryField()[patchi];
+                    abbFaces.append
+                    (
+                        crossingFaces(x, q, fa.second(), patchi, patchFacei)
+                    );
                     abbRho.append
                     (
                         units.rhoLattice
                         (
-                            faceB.first() < 0
-                          ? pPatch[patchFacei]
-                          : (1 - faceB.second())*pPatch[patchFacei]
-                          + faceB.second()*pPatch[faceB.first()]
+                            crossingValue
+                            (
+                                p.boundaryField()[patchi], abbFaces.last()
+                            )
                         )
                     );
                     break;
@@ -527,8 +528,7 @@ Foam::lbmBoundaries::lbmBoundaries
     abbNode_.transfer(abbNode);
     abbDir_.transfer(abbDir);
     abbRho_.transfer(abbRho);
-    abbFaceB_.transfer(abbFaceB);
-    abbWeightB_.transfer(abbWeightB);
+    abbFaces_.transfer(abbFaces);
     varyingCopy_.transfer(varyingCopy);
     varyingCopyPatch_.transfer(varyingCopyPatch);
     varyingCopyFace_.transfer(varyingCopyFace);
@@ -540,29 +540,31 @@ Foam::lbmBoundaries::lbmBoundaries
 }
 
 
-Foam::Tuple2<Foam::label, Foam::scalar>
-Foam::lbmBoundaries::crossingFace
+Foam::FixedList<Foam::label, 4> Foam::lbmBoundaries::crossingFaces
 (
     const label x,
     const label q,
     const label axis,
-    const label patchi
+    const label patchi,
+    const label ownFace
 ) const
 {
     // A diagonal link leaving x through the patch crosses it at x - c/2:
-    // half a spacing along the patch from the centre of x's face, on the
-    // edge it shares with the face of the node x - c_t (c_t: c without its
-    // normal component). A patch value that varies along the patch (the
-    // hydrostatic pressure on a vertical patch) is taken there, as the
-    // mean of the two faces. With the value of x's face alone, the links
-    // going up and down through the patch carried densities half a
-    // gradient step too high and too low: a vertical patch holding the
-    // hydrostatic pressure of water at rest drove a current that grew to
-    // 0.3 m/s in 8 s in a 1 m tank (validation/hydrostaticPressurePatch).
-    // Where x - c_t has no face on the patch (the patch's end, or a node
-    // of another processor), the value is extrapolated
-    // from the face on the other side, x + c_t: the same for values that
-    // vary linearly along the patch.
+    // half a spacing along the patch from the centre of x's face A, on the
+    // edge A shares with the face B of the node x - c_t (c_t: c without
+    // its normal component). A patch value that varies along the patch
+    // (the hydrostatic pressure on a vertical patch) is taken there
+    // (crossingValue). With the value of A alone, the links going up and
+    // down through the patch carried densities half a gradient step too
+    // high and too low: a vertical patch holding the hydrostatic pressure
+    // of water at rest drove a current that grew to 0.3 m/s in 8 s in a
+    // 1 m tank (validation/hydrostaticPressurePatch). The faces beyond, C
+    // at x + c_t and D at x - 2 c_t, extrapolate where B is missing (the
+    // patch's end, a node of another processor) or where the value has a
+    // kink between A and B (a reservoir's level). -1: no such face.
+    FixedList<label, 4> faces(-1);
+    faces[0] = ownFace;
+
     const List<unsigned char>& kind = lattice_.kind();
     const labelList& nodeCell = lattice_.nodeCell();
     const List<FixedList<label, 6>>& cellFace = lattice_.cellBoundaryFace();
@@ -579,7 +581,7 @@ Foam::lbmBoundaries::crossingFace
     )
     {
         // (a link along the normal, or one past a concave corner)
-        return Tuple2<label, scalar>(-1, 0);
+        return faces;
     }
     label offset = 0;
     for (direction a = 0; a < 3; ++a)
@@ -587,7 +589,7 @@ Foam::lbmBoundaries::crossingFace
         if (ct[a] != 0 && kind[x - ct[a]*stride[a]] == latticeMesh::WALL)
         {
             // (an edge or corner of the domain: the face of x alone)
-            return Tuple2<label, scalar>(-1, 0);
+            return faces;
         }
         offset += ct[a]*stride[a];
     }
@@ -603,35 +605,68 @@ Foam::lbmBoundaries::crossingFace
             facei >= patch.start() && facei < patch.start() + patch.size()
           ? facei - patch.start() : -1;
     };
-    label faceB = faceOnPatch(x - offset);
-    if (faceB >= 0)
+    faces[1] = faceOnPatch(x - offset);
+    faces[2] = faceOnPatch(x + offset);
+    if (faces[1] >= 0)
     {
-        return Tuple2<label, scalar>(faceB, 0.5);
+        // (x - offset is owned: x - 2 offset lies in the box)
+        faces[3] = faceOnPatch(x - 2*offset);
     }
-    faceB = faceOnPatch(x + offset);
-    if (faceB >= 0)
-    {
-        return Tuple2<label, scalar>(faceB, -0.5);
-    }
-    return Tuple2<label, scalar>(-1, 0);
+    return faces;
 }
 
 
-Foam::scalar Foam::lbmBoundaries::crossingDensity
+Foam::scalar Foam::lbmBoundaries::crossingValue
 (
-    const lbmUnits& units,
     const scalarField& pPatch,
-    const label facei,
-    const label i
+    const FixedList<label, 4>& faces
 ) const
 {
-    const label faceB = abbFaceB_[i];
-    return units.rhoLattice
-    (
-        faceB < 0
-      ? pPatch[facei]
-      : (1 - abbWeightB_[i])*pPatch[facei] + abbWeightB_[i]*pPatch[faceB]
-    );
+    // Between A and B: their mean, exact for values linear along the
+    // patch. Where one of them holds the gas's pressure or less (air
+    // outside: a reservoir's level between them, below which p = rho g
+    // (h - y) and above which the gas's), the mean would take the kink in
+    // (half of rho g dx too high at the level): the value is extrapolated
+    // from the wet face and the one beyond it, no lower than the gas's.
+    // Without B: extrapolated from A and C.
+    const label A = faces[0], B = faces[1], C = faces[2], D = faces[3];
+    const scalar a = pPatch[A];
+    if (B < 0)
+    {
+        return C < 0 ? a : 1.5*a - 0.5*pPatch[C];
+    }
+    const scalar b = pPatch[B];
+    const bool wetA = a > gasPressure_, wetB = b > gasPressure_;
+    if (wetA == wetB)
+    {
+        return 0.5*(a + b);
+    }
+    const scalar v =
+        wetA
+      ? (C < 0 ? a : 1.5*a - 0.5*pPatch[C])
+      : (D < 0 ? b : 1.5*b - 0.5*pPatch[D]);
+    return max(v, gasPressure_);
+}
+
+
+void Foam::lbmBoundaries::setGasPressure
+(
+    const scalar pGas,
+    const volScalarField& p,
+    const lbmUnits& units
+)
+{
+    gasPressure_ = pGas;
+    forAll(abbRho_, i)
+    {
+        if (!absorbing_[abbPatch_[i]])
+        {
+            abbRho_[i] = units.rhoLattice
+            (
+                crossingValue(p.boundaryField()[abbPatch_[i]], abbFaces_[i])
+            );
+        }
+    }
 }
 
 
@@ -641,7 +676,8 @@ inline Foam::scalar Foam::lbmBoundaries::pressureLinkValue
 (
     const scalar* f,
     const scalar* porosity,
-    const label i
+    const label i,
+    const scalar rhoPatch
 ) const
 {
     // Pressure: non-equilibrium extrapolation (Guo, Zheng & Shi 2002,
@@ -672,8 +708,8 @@ inline Foam::scalar Foam::lbmBoundaries::pressureLinkValue
     const scalar shape = w[q]*(1.0 + 3.0*cu + 4.5*cu*cu - 1.5*magSqr(u));
     // (porous flow: the pore pressure p is c_s^2 (rho - 1)/eps, so the
     // density that holds p next to node x is 1 + eps (rho(p) - 1))
-    const scalar rhoB =
-        porosity ? 1.0 + porosity[x]*(abbRho_[i] - 1.0) : abbRho_[i];
+    const scalar rhoP = rhoPatch > 0 ? rhoPatch : abbRho_[i];
+    const scalar rhoB = porosity ? 1.0 + porosity[x]*(rhoP - 1.0) : rhoP;
     const scalar rhoWall = 2.0*rhoB - rho;
     return f[q*nBox + x] + (rhoWall - rho)*shape;
 }
@@ -726,12 +762,9 @@ void Foam::lbmBoundaries::update
     forAll(varyingAbb_, k)
     {
         const label i = varyingAbb_[k];
-        abbRho_[i] = crossingDensity
+        abbRho_[i] = units.rhoLattice
         (
-            units,
-            p.boundaryField()[varyingAbbPatch_[k]],
-            varyingAbbFace_[k],
-            i
+            crossingValue(p.boundaryField()[varyingAbbPatch_[k]], abbFaces_[i])
         );
     }
 
@@ -793,7 +826,13 @@ void Foam::lbmBoundaries::setAbsorbingState(const scalarList& rho)
 }
 
 
-void Foam::lbmBoundaries::fill(scalar* f, const scalar* porosity) const
+void Foam::lbmBoundaries::fill
+(
+    scalar* f,
+    const scalar* porosity,
+    const lbmFreeSurface* freeSurface,
+    const vector& g
+) const
 {
     const label n = copyGhost_.size();
     const label* ghost = copyGhost_.cdata();
@@ -818,6 +857,38 @@ void Foam::lbmBoundaries::fill(scalar* f, const scalar* porosity) const
         return;
     }
 
+    if (freeSurface)
+    {
+        // A pressure patch that the surface meets: no link of a gas node
+        // (no water: no pull reads its slots); where the patch holds the
+        // gas's pressure or less (air outside: above the reservoir's
+        // level), an interface node's link takes the gas's pressure
+        // carried from the surface to where it crosses the patch, as the
+        // free surface's links to the gas do (the patch's value there,
+        // the gas's, sat above the water's own pressure beside the
+        // surface and drove water in). Extrapolated as the patch's other
+        // links, not rebuilt as a gas link: rebuilt, it held a current of
+        // 3e-3 m/s through the patch beside a reservoir at the tank's
+        // level
+        const scalar rhoGas = freeSurface->rhoGas();
+        forAll(abbGhost_, i)
+        {
+            const label x = abbNode_[i];
+            if (freeSurface->gas(x))
+            {
+                continue;
+            }
+            f[abbGhost_[i]] =
+                freeSurface->interface(x) && dryPressureLink(i, rhoGas)
+              ? pressureLinkValue
+                (
+                    f, porosity, i,
+                    freeSurface->gasLinkDensity(x, abbDir_[i], g)
+                )
+              : pressureLinkValue(f, porosity, i);
+        }
+        return;
+    }
     forAll(abbGhost_, i)
     {
         f[abbGhost_[i]] = pressureLinkValue(f, porosity, i);
@@ -981,27 +1052,6 @@ Foam::labelList Foam::lbmBoundaries::pressureNodes() const
     }
     nodes.setSize(nUnique);
     return nodes;
-}
-
-
-void Foam::lbmBoundaries::pressureNodes
-(
-    labelList& nodes,
-    labelList& patches
-) const
-{
-    // (a node's first link, in the order the links were collected)
-    Map<label> patchOf;
-    forAll(abbNode_, i)
-    {
-        patchOf.insert(abbNode_[i], abbPatch_[i]);
-    }
-    nodes = pressureNodes();
-    patches.setSize(nodes.size());
-    forAll(nodes, i)
-    {
-        patches[i] = patchOf[nodes[i]];
-    }
 }
 
 

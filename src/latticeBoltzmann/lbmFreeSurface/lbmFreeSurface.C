@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "lbmFreeSurface.H"
+#include "lbmBoundaries.H"
 #include "latticeDescriptors.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -278,8 +279,6 @@ void Foam::lbmFreeSurface::reconstruct
     const label Q = vs_.Q();
     const label nBox = lattice_.nBox();
     const List<labelVector>& c = vs_.c();
-    const scalarList& w = vs_.w();
-    const labelList& opp = vs_.opp();
 
     // The mass each interface node exchanges, from the populations as
     // they left the collision (before any is rebuilt)
@@ -291,49 +290,13 @@ void Foam::lbmFreeSurface::reconstruct
     // (the rebuilt populations go into gas nodes' slots only: an interface
     // node's own populations, its density and velocity, stay as they left
     // the collision)
-    const bool gravity = (magSqr(g) > 0);
     for (const label x : interface_)
     {
         scalar rho;
         vector u;
         moments(f, x, g, rho, u);
-        // (in a porous lattice: the equilibrium's second-order terms over
-        // n, the pressure that of the pores, c_s^2 (rho - 1)/n)
         const scalar eps = porosity(x);
-        const scalar u2 = magSqr(u)/eps;
-
-        const vector grad
-        (
-            gravity || sigmaRho_ != 0 ? fillGradient(x) : vector::zero
-        );
-
-        // The gas pressure at the surface, raised by the capillary pressure
-        // sigma kappa (Laplace)
-        const scalar rhoGasX =
-            rhoGas_ + (sigmaRho_ != 0 ? sigmaRho_*curvature(x, grad) : 0);
-
-        // Where the gas pressure holds. The rebuilt populations set it at
-        // the middle of each link to the gas, wherever the surface lies in
-        // the node: a shift of up to one cell, rho g dx of pressure in
-        // the whole water at rest. With gravity, the gas density of each
-        // link is the gas pressure carried from the surface (at
-        // (fill - 1/2) dx along the normal n from the node) to the link's
-        // middle, x - c_q/2, with the pressure gradient of a slow flow,
-        // grad(p) = rho g + F_d (F_d the drag or the porous medium's
-        // resistance: in a porous medium the water flows under a gradient
-        // far from hydrostatic; carried hydrostatically, a slug of water
-        // falling through a bed 10 cells long had its ends' pressure off
-        // by 0.4 rho g dx and fell 8% slow)
-        vector surface(Zero);
-        const scalar magGrad = mag(grad);
-        if (gravity && magGrad > SMALL)
-        {
-            // n = -grad/|grad| points into the gas
-            surface = -(fill_[x] - 0.5)/magGrad*grad;
-        }
-        // (the pores' pressure gradient: the lattice's force n rho_0 g + F_d
-        // acts on n times the pore water's)
-        const vector gradP = g + otherForce(x)/eps;
+        const gasAtSurface gs(gasState(x, g));
 
         for (label q = 1; q < Q; ++q)
         {
@@ -346,24 +309,124 @@ void Foam::lbmFreeSurface::reconstruct
             {
                 continue;
             }
-            scalar rhoG = rhoGasX;
-            if (gravity)
-            {
-                // x_mid - x_s, in lattice units (cs^2 = 1/3)
-                const vector d(-0.5*vector(c[q]) - surface);
-                rhoG += 3*(gradP & d);
-            }
-            if (eps != 1)
-            {
-                rhoG = 1 + eps*(rhoG - 1);
-            }
-            // f^eq_q + f^eq_-q at the gas density: the odd terms cancel
-            const scalar cu = vector(c[q]) & u;
-            f[q*nBox + y] =
-                2*w[q]*rhoG*(1 + 4.5*cu*cu/eps - 1.5*u2)
-              - f[opp[q]*nBox + x];
+            f[q*nBox + y] = gasPopulation
+            (
+                f, x, q, u, eps, gs.density(-0.5*vector(c[q]))
+            );
         }
     }
+}
+
+
+Foam::scalar Foam::lbmFreeSurface::gasPopulation
+(
+    const scalar* f,
+    const label x,
+    const label q,
+    const vector& u,
+    const scalar eps,
+    const scalar rhoPore
+) const
+{
+    // (in a porous lattice: the equilibrium's second-order terms over n,
+    // the pressure that of the pores, c_s^2 (rho - 1)/n)
+    const scalar rhoG = eps != 1 ? 1 + eps*(rhoPore - 1) : rhoPore;
+    // f^eq_q + f^eq_-q at the gas density: the odd terms cancel
+    const scalar cu = vector(vs_.c()[q]) & u;
+    return
+        2*vs_.w()[q]*rhoG*(1 + 4.5*cu*cu/eps - 1.5*magSqr(u)/eps)
+      - f[vs_.opp()[q]*lattice_.nBox() + x];
+}
+
+
+Foam::scalar Foam::lbmFreeSurface::gasLinkDensity
+(
+    const label x,
+    const label q,
+    const vector& g
+) const
+{
+    return gasState(x, g).density(-0.5*vector(vs_.c()[q]));
+}
+
+
+void Foam::lbmFreeSurface::pressureLinkMass
+(
+    const scalar* f,
+    const lbmBoundaries& boundaries
+)
+{
+    // exchangeMass gave each interface node the whole of what its links to
+    // the boundaries bring, as a liquid neighbour's. Through a pressure
+    // patch the water comes over the node's wet share only: its fill
+    // level (taken whole, water ran in through the patch faster than the
+    // node passed it on to the interface beside it, and a tank at rest
+    // beside a reservoir at its own level filled up and blew up). Where
+    // the patch holds the gas's pressure or less (air outside), the link
+    // is a gas link and brings none.
+    const label nBox = lattice_.nBox();
+    const labelList& opp = vs_.opp();
+    const labelList& node = boundaries.pressureLinkNodes();
+    const labelList& dir = boundaries.pressureLinkDirections();
+    const labelList& ghost = boundaries.pressureLinkGhosts();
+    forAll(node, i)
+    {
+        const label x = node[i];
+        if (type_[x] != INTERFACE)
+        {
+            continue;
+        }
+        const scalar s = boundaries.dryPressureLink(i, rhoGas_) ? 0 : fill_[x];
+        mass_[x] += (s - 1)*(f[ghost[i]] - f[opp[dir[i]]*nBox + x]);
+    }
+}
+
+
+Foam::lbmFreeSurface::gasAtSurface Foam::lbmFreeSurface::gasState
+(
+    const label x,
+    const vector& g
+) const
+{
+    const bool gravity = (magSqr(g) > 0);
+    const scalar eps = porosity(x);
+    const vector grad
+    (
+        gravity || sigmaRho_ != 0 ? fillGradient(x) : vector::zero
+    );
+
+    gasAtSurface gs;
+    // The gas pressure at the surface, raised by the capillary pressure
+    // sigma kappa (Laplace)
+    gs.rho = rhoGas_ + (sigmaRho_ != 0 ? sigmaRho_*curvature(x, grad) : 0);
+
+    // Where the gas pressure holds. The rebuilt populations set it at the
+    // middle of each link to the gas, wherever the surface lies in the
+    // node: a shift of up to one cell, rho g dx of pressure in the whole
+    // water at rest. With gravity, the gas density of each link is the gas
+    // pressure carried from the surface (at (fill - 1/2) dx along the
+    // normal n from the node) to the link's middle, x - c_q/2, with the
+    // pressure gradient of a slow flow, grad(p) = rho_0 g + F_d (F_d the
+    // drag or the porous medium's resistance: in a porous medium the water
+    // flows under a gradient far from hydrostatic; carried hydrostatically,
+    // a slug of water falling through a bed 10 cells long had its ends'
+    // pressure off by 0.4 rho g dx and fell 8% slow)
+    gs.surface = Zero;
+    gs.gradP = Zero;
+    const scalar magGrad = mag(grad);
+    if (gravity)
+    {
+        if (magGrad > SMALL)
+        {
+            // n = -grad/|grad| points into the gas
+            gs.surface = -(fill_[x] - 0.5)/magGrad*grad;
+        }
+        // (the pores' pressure gradient: the lattice's force n rho_0 g + F_d
+        // acts on n times the pore water's; x_mid - x_s in lattice units,
+        // cs^2 = 1/3)
+        gs.gradP = 3*(g + otherForce(x)/eps);
+    }
+    return gs;
 }
 
 

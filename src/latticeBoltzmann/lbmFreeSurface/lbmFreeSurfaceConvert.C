@@ -373,44 +373,6 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
     exchangeTypes();
     halo.exchange(fill_.data(), 1, nBox);
     rebuild();
-    checkPressureNodes();
-}
-
-
-void Foam::lbmFreeSurface::setPressureNodes
-(
-    const labelList& nodes,
-    const wordList& patch
-)
-{
-    pressureNodes_ = nodes;
-    pressurePatch_ = patch;
-}
-
-
-void Foam::lbmFreeSurface::checkPressureNodes() const
-{
-    forAll(pressureNodes_, i)
-    {
-        const label n = pressureNodes_[i];
-        if (type_[n] == LIQUID)
-        {
-            continue;
-        }
-        const Time& runTime = lattice_.mesh().time();
-        FatalErrorInFunction
-            << "The water's surface meets the pressure patch "
-            << pressurePatch_[i] << " at " << lattice_.position(n)
-            << " (time " << runTime.timeName() << "): the node next to it is "
-            << (type_[n] == GAS ? "gas" : "an interface node") << "." << nl
-            << "    With freeSurface a pressure patch must lie under the"
-            << " water, one node or more below the surface: its links bring"
-            << " water the surface's mass balance does not count. Lower the"
-            << " patch (or give it below the surface only, e.g. on the"
-            << " floor of a reservoir, whose level its pressure then"
-            << " holds), or raise the water (0/alpha.water)"
-            << exit(FatalError);
-    }
 }
 
 

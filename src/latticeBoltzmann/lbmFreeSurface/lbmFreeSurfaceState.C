@@ -97,7 +97,6 @@ void Foam::lbmFreeSurface::setFromFraction
         }
     }
     rebuild();
-    checkPressureNodes();
 }
 
 
@@ -161,7 +160,6 @@ void Foam::lbmFreeSurface::readState(scalar* f)
     exchangeTypes();
     lattice_.halo().exchange(fill_.data(), 1, nBox);
     rebuild();
-    checkPressureNodes();
 }
 
 

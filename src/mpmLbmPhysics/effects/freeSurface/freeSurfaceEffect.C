@@ -133,8 +133,8 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
     }
 
     // The boundaries that read only their own node's populations work
-    // where the surface meets them, a pressure patch as long as its nodes
-    // stay liquid (checked at every step: lbmFreeSurface); a slip wall's
+    // where the surface meets them (walls, inlets, pressure patches: the
+    // interface nodes count what their links bring); a slip wall's
     // specular reflection reads its neighbours', which may be gas nodes
     // (not yet handled: refused rather than wrong)
     {
