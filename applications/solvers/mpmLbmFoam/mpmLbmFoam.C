@@ -34,6 +34,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "IFstream.H"
 #include "physicsScene.H"
 #include "caseChecks.H"
 #include "restartManifest.H"
@@ -74,6 +75,22 @@ int main(int argc, char *argv[])
             Info<< "Create time\n" << endl;
             runTimePtr.reset(new Time(Time::controlDictName, args));
             restoreRunClock(*runTimePtr);
+            // The function objects' state of the start time, which OpenFOAM
+            // reads when they start, after this guarded set-up: read here
+            // first, so that 1e400 in it ends with the parser's error naming
+            // the file rather than a floating-point trap
+            {
+                const fileName state
+                (
+                    runTimePtr->timePath()/"uniform"/"functionObjects"
+                   /"functionObjectProperties"
+                );
+                if (isFile(state))
+                {
+                    IFstream is(state);
+                    const dictionary check(is);
+                }
+            }
 
             Info<< "Create mesh for time = " << runTimePtr->timeName()
                 << nl << endl;

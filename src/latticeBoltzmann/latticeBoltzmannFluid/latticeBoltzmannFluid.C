@@ -35,15 +35,23 @@ const Foam::word Foam::latticeBoltzmannFluid::outletStateFile("lbmOutletState");
 namespace
 {
 
-// A positive physical property from the dictionary, or a FatalIOError
-Foam::scalar positiveEntry(const Foam::dictionary& dict, const Foam::word& key)
+// A positive physical property from the dictionary, no larger than max,
+// or a FatalIOError
+Foam::scalar positiveEntry
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::scalar max = Foam::VGREAT
+)
 {
     const Foam::scalar value = dict.get<Foam::scalar>(key);
-    if (!(value > 0))
+    if (!(value > 0 && value <= max))
     {
         FatalIOErrorInFunction(dict)
             << "Entry " << key << " = " << value << " is not allowed:"
             << " it must be a positive number (SI units)"
+            << (max < Foam::VGREAT ? " no larger than " : "")
+            << (max < Foam::VGREAT ? Foam::name(max) : Foam::word())
             << Foam::exit(Foam::FatalIOError);
     }
     return value;
@@ -100,8 +108,9 @@ void Foam::latticeBoltzmannFluid::checkUnits() const
                 << " - 1/2 = " << tauMinusHalf << " exceeds the domain's "
                 << nMin << " cells across, so the lattice would model a"
                 << " rarefied gas, not water." << nl
-                << "    Check nu's units (m2/s), or use a smaller deltaT"
-                << " (tau - 1/2 = 3 nu deltaT/dx^2)." << exit(FatalIOError);
+                << "    Check nu's units (m2/s), or use a smaller deltaT in"
+                << " system/controlDict (tau - 1/2 = 3 nu deltaT/dx^2)."
+                << exit(FatalIOError);
         }
     }
     if (tauMinusHalf < collision_->marginalTauMinusHalf())
@@ -222,7 +231,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         lattice.dx(),
         mesh_.time().deltaTValue(),
         positiveEntry(dict_, "nu"),
-        positiveEntry(dict_, "rho")
+        positiveEntry(dict_, "rho", 1e5)
     ),
     collision_(collisionModel::New(dict_, velocitySet_())),
     bodyAcceleration_(Zero),
@@ -320,6 +329,63 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         );
         checkFinite(U_.boundaryField()[patchi], U_.objectPath(), entry);
         checkFinite(p_.boundaryField()[patchi], p_.objectPath(), entry);
+    }
+    // ... and values the lattice cannot hold: a pressure whose lattice
+    // density 1 + p/(rho c_s^2) is not in (0, 2) (1e300 overflowed the
+    // kernel before the stability guard saw it), a speed at or above the
+    // Mach limit
+    {
+        const scalar pMax = units_.rho0()*sqr(units_.soundSpeed());
+        forAll(p_, celli)
+        {
+            if (!(mag(p_[celli]) < pMax))
+            {
+                FatalErrorInFunction
+                    << "file: " << p_.objectPath() << ", internalField: p "
+                    << p_[celli] << " Pa at cell " << celli << " is not"
+                    << " allowed: the lattice holds |p| < rho c_s^2 = "
+                    << pMax << " Pa at this deltaT and cell size (its"
+                    << " density 1 + p/(rho c_s^2) must lie in (0, 2); c_s ="
+                    << " dx/(sqrt(3) deltaT) = " << units_.soundSpeed()
+                    << " m/s)." << nl
+                    << "    Check p's units (Pa, relative to the reference;"
+                    << " not p/rho), or use a smaller deltaT in"
+                    << " system/controlDict" << exit(FatalError);
+            }
+        }
+        const scalar uMax = machLimit_*units_.soundSpeed();
+        auto checkU = [&](const vectorField& U, const word& entry)
+        {
+            forAll(U, i)
+            {
+                const vector& v = U[i];
+                if
+                (
+                    !(mag(v.x()) < uMax && mag(v.y()) < uMax
+                   && mag(v.z()) < uMax && mag(v) < uMax)
+                )
+                {
+                    FatalErrorInFunction
+                        << "file: " << U_.objectPath() << ", " << entry
+                        << ": U " << v << " at index " << i << " is at or"
+                        << " above machLimit " << machLimit_ << " times the"
+                        << " lattice's speed of sound, " << uMax << " m/s at"
+                        << " this deltaT and cell size (c_s = dx/(sqrt(3)"
+                        << " deltaT) = " << units_.soundSpeed() << " m/s)."
+                        << nl << "    Check U, or use a smaller deltaT in"
+                        << " system/controlDict" << exit(FatalError);
+                }
+            }
+        };
+        checkU(U_.primitiveField(), "internalField");
+        forAll(U_.boundaryField(), patchi)
+        {
+            checkU
+            (
+                U_.boundaryField()[patchi],
+                "boundaryField." + U_.boundaryField()[patchi].patch().name()
+            );
+        }
     }
 
     if (U_.dimensions() != dimVelocity)

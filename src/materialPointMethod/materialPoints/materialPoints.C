@@ -14,6 +14,7 @@ License
 #include "caseChecks.H"
 #include "materialPoints.H"
 #include "passiveParticleCloud.H"
+#include "IFstream.H"
 #include "IOField.H"
 #include "globalIndex.H"
 #include "PstreamBuffers.H"
@@ -405,6 +406,45 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
         return false;
     }
 
+    // OpenFOAM's bookkeeping of the cloud (a particle counter per
+    // processor), which the cloud reads: a damaged one is refused naming
+    // it (OpenFOAM's own error named an IOstream). Its values are not used:
+    // the points carry their identities
+    {
+        const fileName props
+        (
+            mesh.time().timePath()/"uniform"/cloud::prefix/cloudName
+           /"cloudProperties"
+        );
+        const string damaged = catchFatal
+        (
+            [&]()
+            {
+                if (isFile(props))
+                {
+                    IFstream is(props);
+                    const dictionary dict(is);
+                    for (const entry& e : dict)
+                    {
+                        if (e.isDict())
+                        {
+                            e.dict().get<label>("particleCount");
+                        }
+                    }
+                }
+            },
+            false
+        );
+        if (!damaged.empty())
+        {
+            FatalErrorInFunction
+                << "file: " << props << " is damaged: " << damaged.c_str()
+                << nl << "    Restore it, or remove it (it holds only"
+                << " OpenFOAM's particle counter, which the soil does not"
+                << " use)" << exit(FatalError);
+        }
+    }
+
     // (on every processor, those without points too: the cloud's
     // construction is collective)
     passiveParticleCloud cloud(mesh, cloudName, false);
@@ -545,8 +585,26 @@ void Foam::materialPoints::readFields
     checkValues
     (
         F, dir/"F", "values",
-        [](const tensor& f) { return det(f) > 0; },
-        "of positive determinant: a deformation gradient"
+        [](const tensor& f)
+        {
+            return cmptMax(cmptMag(f)) <= 1e6 && det(f) > 0;
+        },
+        "of positive determinant, within 1e6 in every component: a"
+        " deformation gradient"
+    );
+    // (1e300 in the affine velocity overflowed the volume's update in the
+    // first step)
+    checkValues
+    (
+        C, dir/"C", "values",
+        [](const tensor& c) { return cmptMax(cmptMag(c)) <= 1e8; },
+        "within 1e8 1/s in every component: a velocity gradient"
+    );
+    checkValues
+    (
+        v, dir/"U", "values",
+        [](const vector& u) { return cmptMax(cmptMag(u)) <= 1e5; },
+        "within 1e5 m/s in every component: a soil's velocity"
     );
     checkValues
     (
@@ -597,6 +655,12 @@ void Foam::materialPoints::write
     const latticeMesh& lattice
 ) const
 {
+    // OpenFOAM's particle counter (uniform/lagrangian/.../cloudProperties,
+    // for new particles' identities) counts this write's points only: the
+    // points carry their own identity (origId), and a count carried on
+    // from a read cloudProperties made a damaged one change every later
+    // time's files without a word
+    passiveParticle::particleCount_ = 0;
     passiveParticleCloud cloud(mesh, cloudName, IDLList<passiveParticle>());
 
     // Attach each point to its cell through the lattice (no search)

@@ -234,11 +234,30 @@ void Foam::functionObjects::materialPointProbes::initialise
     {
         return;
     }
-    // A restart continues the probes of the run it continues
-    bool found =
-        getProperty("ids", ids_)
-     && getProperty("weights", weights_)
-     && getProperty("start", start_)
+    // A restart continues the probes of the run it continues. A state that
+    // cannot be read (a list of size -4: OpenFOAM's reading error, which
+    // would drop the function object with a warning that names no file)
+    // is no state
+    bool found = false;
+    {
+        const bool throwing = FatalError.throwExceptions(true);
+        const bool ioThrowing = FatalIOError.throwExceptions(true);
+        try
+        {
+            found =
+                getProperty("ids", ids_)
+             && getProperty("weights", weights_)
+             && getProperty("start", start_);
+        }
+        catch (const Foam::error&)
+        {
+            found = false;
+        }
+        FatalError.throwExceptions(throwing);
+        FatalIOError.throwExceptions(ioThrowing);
+    }
+    found =
+        found
      && ids_.size() == locations_.size()
      && weights_.size() == ids_.size()
      && start_.size() == ids_.size();
@@ -254,10 +273,21 @@ void Foam::functionObjects::materialPointProbes::initialise
             sumW += weights_[pi][i];
             found = found && std::isfinite(weights_[pi][i]) && weights_[pi][i] >= 0;
         }
+        // (each point once; the start, the points' weighted position
+        // when the probe took them, within the two cells of the location
+        // a probe takes its points from: compared per component, as 1e300
+        // overflowed the magnitude)
+        const labelHashSet distinct(ids_[pi]);
+        const vector d(start_[pi] - locations_[pi]);
+        const scalar reach = 2*scene.lattice().dx()*(1 + 1e-9);
         found =
             found && weights_[pi].size() == ids_[pi].size()
-         && ids_[pi].size() <= nNearest_ && mag(sumW - 1) < 1e-9
-         && std::isfinite(mag(start_[pi])) && min(ids_[pi]) >= 0;
+         && ids_[pi].size() && ids_[pi].size() <= nNearest_
+         && distinct.size() == ids_[pi].size()
+         && mag(sumW - 1) < 1e-9 && min(ids_[pi]) >= 0
+         && std::isfinite(d.x()) && std::isfinite(d.y())
+         && std::isfinite(d.z()) && mag(d.x()) <= reach
+         && mag(d.y()) <= reach && mag(d.z()) <= reach;
     }
     if (!found)
     {
@@ -325,13 +355,29 @@ bool Foam::functionObjects::materialPointProbes::read(const dictionary& dict)
             << "probeLocations is empty: give at least one point"
             << exit(FatalIOError);
     }
+    // (per component: 1e300 overflowed the magnitude; in a 2D case the
+    // out-of-plane coordinate is any, as for OpenFOAM's probes)
+    const boundBox& bb = mesh_.bounds();
+    const Vector<label>& solved = mesh_.solutionD();
     forAll(locations_, pi)
     {
-        if (!std::isfinite(mag(locations_[pi])))
+        const point& l = locations_[pi];
+        bool inside = true;
+        for (direction d = 0; d < 3; ++d)
+        {
+            inside =
+                inside && std::isfinite(l[d])
+             && (
+                    solved[d] == -1
+                 || (l[d] >= bb.min()[d] && l[d] <= bb.max()[d])
+                );
+        }
+        if (!inside)
         {
             FatalIOErrorInFunction(dict)
-                << "probeLocations: probe " << pi << " at " << locations_[pi]
-                << " is not a finite point" << exit(FatalIOError);
+                << "probeLocations: probe " << pi << " at " << l
+                << " is not a point of the mesh, " << bb.min() << " to "
+                << bb.max() << exit(FatalIOError);
         }
     }
 

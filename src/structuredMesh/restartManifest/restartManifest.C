@@ -699,7 +699,20 @@ void Foam::restartManifest::checkState
         false
     );
     unreadableManifest(path, runTime, damaged);
-    const bool sameDecomposition = nProcs == Pstream::nProcs();
+    // (agreed by all processors: one whose manifest says otherwise took
+    // the other branch's collective calls, and the run hung)
+    const bool sameHere = !here || nProcs == Pstream::nProcs();
+    const bool sameDecomposition = returnReduce(sameHere, andOp<bool>());
+    if (!sameDecomposition && returnReduce(here && sameHere, orOp<bool>()))
+    {
+        FatalErrorInFunction
+            << "Time " << runTime.timeName() << ": the processors' "
+            << manifestName << " files disagree on nProcessors ("
+            << path << " says " << (here ? nProcs : -1) << ", this run has "
+            << Pstream::nProcs() << "): a manifest is damaged." << nl
+            << "    Restore it or restart from an earlier time"
+            << exit(FatalError);
+    }
     if (sameDecomposition && !here)
     {
         FatalErrorInFunction

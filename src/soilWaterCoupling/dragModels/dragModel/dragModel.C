@@ -58,24 +58,29 @@ Foam::dragModel::dragModel(const word& type, const dictionary& dict)
     muFluid_(dict.get<scalar>("muFluid"))
 {
     // Written so that NaN fails every test
-    if (!(d_ > 0))
+    // (and bounded: 1e300 overflowed the drag laws' powers)
+    if (!(d_ > 0 && d_ <= 10))
     {
-        entryNotAllowed(dict, "d", d_, "the grain diameter must be > 0 [m]");
+        entryNotAllowed
+        (
+            dict, "d", d_, "the grain diameter must lie in (0, 10] [m]"
+        );
     }
-    if (!(rhoFluid_ > 0))
+    if (!(rhoFluid_ > 0 && rhoFluid_ <= 1e5))
     {
         entryNotAllowed
         (
             dict, "rhoFluid", rhoFluid_,
-            "the fluid density must be > 0 [kg/m3]"
+            "the fluid density must lie in (0, 1e5] [kg/m3]"
         );
     }
-    if (!(muFluid_ > 0))
+    if (!(muFluid_ > 0 && muFluid_ <= 1e6))
     {
         entryNotAllowed
         (
             dict, "muFluid", muFluid_,
-            "the (physical) fluid dynamic viscosity must be > 0 [Pa s]"
+            "the (physical) fluid dynamic viscosity must lie in (0, 1e6]"
+            " [Pa s] (water 1e-3)"
         );
     }
 }
