@@ -71,7 +71,18 @@ Foam::physicsEffects::gravity::gravity(physicsScene& scene)
     if (dict.found("gravityCoeffs"))
     {
         const dictionary& coeffs = dict.subDict("gravityCoeffs");
-        phases_ = coeffs.get<wordList>("phases");
+        // (OpenFOAM's list error names a stream, not the file: given here)
+        const string unreadable = catchFatal
+        (
+            [&]() { phases_ = coeffs.get<wordList>("phases"); },
+            false
+        );
+        if (!unreadable.empty())
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "phases is not a list of phases (e.g. (fluid soil)): "
+                << unreadable.c_str() << exit(FatalIOError);
+        }
         for (const word& ph : phases_)
         {
             if (!allowed.found(ph))
