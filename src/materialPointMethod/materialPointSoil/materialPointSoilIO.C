@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialPointSoil.H"
+#include "StringStream.H"
 #include "restartManifest.H"
 #include "IFstream.H"
 #include "selectEntry.H"
@@ -122,6 +123,11 @@ void Foam::materialPointSoil::checkAgainstWriter() const
     const dictionary& global = written.subDict("global");
     HashTable<scalar> sums(points_.hashSums());
     wordList differ;
+    if (returnReduce(points_.size(), sumOp<label>()) == 0)
+    {
+        // (no point was read: the positions are what is missing)
+        differ.append("coordinates");
+    }
     for (const word& name : sums.sortedToc())
     {
         const word key("cloudHash_" + name);
@@ -133,9 +139,20 @@ void Foam::materialPointSoil::checkAgainstWriter() const
     }
     if (differ.size())
     {
+        // (each named by its file)
+        OStringStream files;
+        for (const word& name : differ)
+        {
+            const fileName file
+            (
+                runTime.timeName()/"lagrangian"/materialPoints::cloudName
+               /name
+            );
+            files<< " " << file.c_str();
+            restartManifest::suspects.append(file);
+        }
         WarningInFunction
-            << "The material points' " << differ << " in "
-            << runTime.timeName()/"lagrangian"/materialPoints::cloudName
+            << "The material points' files" << files.str().c_str()
             << (Pstream::parRun() ? " (in the processor folders)" : "")
             << " differ from what setMaterialPoints wrote (" << path.name()
             << " of that time): edited, or damaged after it (e.g. after"

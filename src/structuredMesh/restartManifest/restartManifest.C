@@ -28,6 +28,7 @@ License
 
 const Foam::word Foam::restartManifest::incompleteMarker("writeIncomplete");
 const Foam::word Foam::restartManifest::manifestName("restartManifest");
+Foam::DynamicList<Foam::fileName> Foam::restartManifest::suspects;
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -754,6 +755,15 @@ void Foam::restartManifest::checkState
         for (const string& s : problems)
         {
             FatalError<< "        " << s.c_str() << nl;
+        }
+        if (suspects.size())
+        {
+            FatalError<< "    Changed since they were written:";
+            for (const fileName& f : suspects)
+            {
+                FatalError<< " " << f.c_str();
+            }
+            FatalError<< nl;
         }
         FatalError
             << "    A file of that time is missing or damaged"
