@@ -1,0 +1,265 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | mpmLbmFoam: material point + lattice Boltzmann
+   \\    /   O peration     | soil-water interaction on OpenFOAM
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of mpmLbmFoam, distributed under the terms of the GNU
+    General Public License version 3 or later, as OpenFOAM it builds on.
+
+\*---------------------------------------------------------------------------*/
+
+// The pressure links' values: the patch value where a link crosses the
+// patch, the gas's pressure at a free surface, the values that change in
+// time (Function1 patches, outlets that let waves leave)
+
+#include "lbmBoundaries.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::FixedList<Foam::label, 4> Foam::lbmBoundaries::crossingFaces
+(
+    const label x,
+    const label q,
+    const label axis,
+    const label patchi,
+    const label ownFace
+) const
+{
+    // A diagonal link leaving x through the patch crosses it at x - c/2:
+    // half a spacing along the patch from the centre of x's face A, on the
+    // edge A shares with the face B of the node x - c_t (c_t: c without
+    // its normal component). A patch value that varies along the patch
+    // (the hydrostatic pressure on a vertical patch) is taken there
+    // (crossingValue). With the value of A alone, the links going up and
+    // down through the patch carried densities half a gradient step too
+    // high and too low: a vertical patch holding the hydrostatic pressure
+    // of water at rest drove a current that grew to 0.3 m/s in 8 s in a
+    // 1 m tank (validation/hydrostaticPressurePatch). The faces beyond, C
+    // at x + c_t and D at x - 2 c_t, extrapolate where B is missing (the
+    // patch's end, a node of another processor) or where the value has a
+    // kink between A and B (a reservoir's level). -1: no such face.
+    FixedList<label, 4> faces(-1);
+    faces[0] = ownFace;
+
+    const List<unsigned char>& kind = lattice_.kind();
+    const labelList& nodeCell = lattice_.nodeCell();
+    const List<FixedList<label, 6>>& cellFace = lattice_.cellBoundaryFace();
+    const labelVector& stride = lattice_.stride();
+    const labelVector& c = vs_.c()[q];
+    const polyPatch& patch = lattice_.mesh().boundaryMesh()[patchi];
+
+    labelVector ct(c);
+    ct[axis] = 0;
+    if
+    (
+        ct == labelVector::zero
+     || kind[x - c[axis]*stride[axis]] != latticeMesh::WALL
+    )
+    {
+        // (a link along the normal, or one past a concave corner)
+        return faces;
+    }
+    label offset = 0;
+    for (direction a = 0; a < 3; ++a)
+    {
+        if (ct[a] != 0 && kind[x - ct[a]*stride[a]] == latticeMesh::WALL)
+        {
+            // (an edge or corner of the domain: the face of x alone)
+            return faces;
+        }
+        offset += ct[a]*stride[a];
+    }
+    const label dir = 2*axis + (-c[axis] > 0 ? 1 : 0);
+    auto faceOnPatch = [&](const label node) -> label
+    {
+        if (kind[node] != latticeMesh::OWNED || nodeCell[node] < 0)
+        {
+            return -1;
+        }
+        const label facei = cellFace[nodeCell[node]][dir];
+        return
+            facei >= patch.start() && facei < patch.start() + patch.size()
+          ? facei - patch.start() : -1;
+    };
+    faces[1] = faceOnPatch(x - offset);
+    faces[2] = faceOnPatch(x + offset);
+    if (faces[1] >= 0)
+    {
+        // (x - offset is owned: x - 2 offset lies in the box)
+        faces[3] = faceOnPatch(x - 2*offset);
+    }
+    return faces;
+}
+
+
+Foam::scalar Foam::lbmBoundaries::crossingValue
+(
+    const scalarField& pPatch,
+    const FixedList<label, 4>& faces
+) const
+{
+    // Between A and B: their mean, exact for values linear along the
+    // patch. Where one of them holds the gas's pressure or less (air
+    // outside: a reservoir's level between them, below which p = rho g
+    // (h - y) and above which the gas's), the mean would take the kink in
+    // (half of rho g dx too high at the level): the value is extrapolated
+    // from the wet face and the one beyond it, no lower than the gas's.
+    // Without B: extrapolated from A and C.
+    const label A = faces[0], B = faces[1], C = faces[2], D = faces[3];
+    const scalar a = pPatch[A];
+    if (B < 0)
+    {
+        return C < 0 ? a : 1.5*a - 0.5*pPatch[C];
+    }
+    const scalar b = pPatch[B];
+    const bool wetA = a > gasPressure_, wetB = b > gasPressure_;
+    if (wetA == wetB)
+    {
+        return 0.5*(a + b);
+    }
+    const scalar v =
+        wetA
+      ? (C < 0 ? a : 1.5*a - 0.5*pPatch[C])
+      : (D < 0 ? b : 1.5*b - 0.5*pPatch[D]);
+    return max(v, gasPressure_);
+}
+
+
+void Foam::lbmBoundaries::setGasPressure
+(
+    const scalar pGas,
+    const volScalarField& p,
+    const lbmUnits& units
+)
+{
+    gasPressure_ = pGas;
+    forAll(abbRho_, i)
+    {
+        if (!absorbing_[abbPatch_[i]])
+        {
+            abbRho_[i] = units.rhoLattice
+            (
+                crossingValue(p.boundaryField()[abbPatch_[i]], abbFaces_[i])
+            );
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::lbmBoundaries::update
+(
+    const lbmUnits& units,
+    volVectorField& U,
+    volScalarField& p,
+    const scalar* f
+)
+{
+    // The patches' Function1 at the current time (every processor, also
+    // one with no link on them: the fields' patch values stay consistent)
+    forAll(varying_, patchi)
+    {
+        if (!varying_[patchi])
+        {
+            continue;
+        }
+        if (patchKinds_[patchi] == PRESSURE)
+        {
+            p.boundaryFieldRef()[patchi].evaluate();
+        }
+        else
+        {
+            U.boundaryFieldRef()[patchi].evaluate();
+        }
+    }
+
+    // Ladd's bounce-back term 6 w_q c_q.u_w of the wall velocity (as the
+    // constructor sets it), and the pressure links' density
+    const List<labelVector>& c = vs_.c();
+    const scalarList& w = vs_.w();
+    const label nBox = lattice_.nBox();
+    forAll(varyingCopy_, k)
+    {
+        const label i = varyingCopy_[k];
+        const vector uw = units.toLattice
+        (
+            U.boundaryField()[varyingCopyPatch_[k]][varyingCopyFace_[k]]
+        );
+        // (the link's direction is that of its wall slot)
+        const label q = copyGhost_[i]/nBox;
+        const scalar cu =
+            c[q].x()*uw.x() + c[q].y()*uw.y() + c[q].z()*uw.z();
+        copyValue_[i] = 6.0*w[q]*cu;
+    }
+    forAll(varyingAbb_, k)
+    {
+        const label i = varyingAbb_[k];
+        abbRho_[i] = units.rhoLattice
+        (
+            crossingValue(p.boundaryField()[varyingAbbPatch_[k]], abbFaces_[i])
+        );
+    }
+
+    // Outlets that let waves leave: the boundary density advected out at
+    // the lattice's speed of sound from the node's, relaxed to fieldInf,
+    // implicit in time (the header gives the equation)
+    const scalar k2c = 2.0/std::sqrt(3.0);
+    const label Q = vs_.Q();
+    forAll(absorbAbb_, k)
+    {
+        const label i = absorbAbb_[k];
+        const label x = abbNode_[i];
+        scalar rhoX = 0;
+        for (label q = 0; q < Q; ++q)
+        {
+            rhoX += f[q*nBox + x];
+        }
+        const label patchi = abbPatch_[i];
+        const scalar m = absorbRelax_[patchi];
+        abbRho_[i] =
+            (abbRho_[i] + k2c*rhoX + m*absorbRhoInf_[patchi])
+           /(1 + k2c + m);
+    }
+}
+
+
+void Foam::lbmBoundaries::setAbsorbingValues
+(
+    const lbmUnits& units,
+    volScalarField& p
+) const
+{
+    forAll(absorbAbb_, k)
+    {
+        const label i = absorbAbb_[k];
+        scalarField& pf = p.boundaryFieldRef()[abbPatch_[i]];
+        pf[absorbFace_[k]] = units.pressure(abbRho_[i]);
+    }
+}
+
+
+Foam::scalarList Foam::lbmBoundaries::absorbingState() const
+{
+    scalarList rho(absorbAbb_.size());
+    forAll(absorbAbb_, k)
+    {
+        rho[k] = abbRho_[absorbAbb_[k]];
+    }
+    return rho;
+}
+
+
+void Foam::lbmBoundaries::setAbsorbingState(const scalarList& rho)
+{
+    forAll(absorbAbb_, k)
+    {
+        abbRho_[absorbAbb_[k]] = rho[k];
+    }
+}
+
+
+// ************************************************************************* //
