@@ -418,6 +418,14 @@ void Foam::soilWalls::buildGhosts()
     ghostNode_.transfer(ghost);
     ghostSource_.transfer(source);
     ghostSign_.transfer(sign);
+    ghostIjk_.setSize(ghostNode_.size());
+    ghostReach_ = 0;
+    forAll(ghostNode_, i)
+    {
+        ghostIjk_[i] = lattice_.boxIjk(ghostNode_[i]);
+        const labelVector d = lattice_.boxIjk(ghostSource_[i]) - ghostIjk_[i];
+        ghostReach_ = max(ghostReach_, cmptMax(cmptMag(d)));
+    }
 
     // Box lookup: the node inside that each node beyond a wall folds into
     ghostImage_ = identity(lattice_.nBox());
@@ -458,8 +466,40 @@ void Foam::soilWalls::buildContacts()
         }
     }
     contactNode_.transfer(cn);
+    contactIjk_.setSize(contactNode_.size());
+    forAll(contactNode_, i)
+    {
+        contactIjk_[i] = lattice_.boxIjk(contactNode_[i]);
+    }
     contactNormal_.transfer(cnormal);
     contactFriction_.transfer(cmu);
+}
+
+
+void Foam::soilWalls::cacheBox(const nodeBox& box) const
+{
+    if (cacheSet_ && box == cachedBox_)
+    {
+        return;
+    }
+    // (in the order of the whole lists: the folds add in the same order
+    // whatever the box)
+    auto select = [&](const List<labelVector>& ijk, labelList& out)
+    {
+        DynamicList<label> in(ijk.size());
+        forAll(ijk, i)
+        {
+            if (box.contains(ijk[i]))
+            {
+                in.append(i);
+            }
+        }
+        out.transfer(in);
+    };
+    select(ghostIjk_, cachedGhosts_);
+    select(contactIjk_, cachedContacts_);
+    cachedBox_ = box;
+    cacheSet_ = true;
 }
 
 
@@ -476,6 +516,8 @@ Foam::soilWalls::soilWalls
     lattice_(lattice),
     reach_(reach),
     shapeName_(shapeName),
+    ghostReach_(0),
+    cacheSet_(false),
     hasMissingCells_
     (
         returnReduce(lattice.mesh().nCells(), sumOp<label>())
@@ -490,14 +532,14 @@ Foam::soilWalls::soilWalls
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::soilWalls::fold(List<vector>& values) const
+void Foam::soilWalls::fold(List<vector>& values, const nodeBox& box) const
 {
     // The grid beyond a wall is the mirror image of the grid inside: what
     // the points gave to a node beyond the wall belongs, mirrored, to its
     // image inside (as if the points had mirror images beyond the wall).
     // Without this the nodes beyond a slip wall would carry part of the
     // weight of the points next to it: a spurious friction.
-    forAll(ghostNode_, i)
+    for (const label i : ghostsIn(box))
     {
         const label w = ghostNode_[i];
         const label src = ghostSource_[i];
@@ -510,9 +552,9 @@ void Foam::soilWalls::fold(List<vector>& values) const
 }
 
 
-void Foam::soilWalls::fold(scalarList& values) const
+void Foam::soilWalls::fold(scalarList& values, const nodeBox& box) const
 {
-    forAll(ghostNode_, i)
+    for (const label i : ghostsIn(box))
     {
         const label w = ghostNode_[i];
         const label src = ghostSource_[i];
@@ -525,18 +567,23 @@ void Foam::soilWalls::fold(scalarList& values) const
 }
 
 
-void Foam::soilWalls::fold(List<vector>& values, scalarList& mass) const
+void Foam::soilWalls::fold
+(
+    List<vector>& values,
+    scalarList& mass,
+    const nodeBox& box
+) const
 {
     // (an image is never itself beyond a wall: the two folds are
     // independent)
-    fold(values);
-    fold(mass);
+    fold(values, box);
+    fold(mass, box);
 }
 
 
-void Foam::soilWalls::mirror(List<vector>& vel) const
+void Foam::soilWalls::mirror(List<vector>& vel, const nodeBox& box) const
 {
-    forAll(ghostNode_, i)
+    for (const label i : ghostsIn(box))
     {
         vel[ghostNode_[i]] = cmptMultiply(ghostSign_[i], vel[ghostSource_[i]]);
     }
@@ -546,12 +593,13 @@ void Foam::soilWalls::mirror(List<vector>& vel) const
 void Foam::soilWalls::applyContact
 (
     List<vector>& vel,
-    const scalarList& mass
+    const scalarList& mass,
+    const nodeBox& box
 ) const
 {
     // Coulomb friction at the last node before a friction wall
     // (Bardenhagen, Brackbill & Sulsky 2000, CMAME 187, 529)
-    forAll(contactNode_, i)
+    for (const label i : contactsIn(box))
     {
         const label n = contactNode_[i];
         if (mass[n] <= VSMALL)

@@ -398,4 +398,30 @@ void Foam::haloExchange::addToOwners
 }
 
 
+void Foam::haloExchange::copyToHalo
+(
+    std::initializer_list<nodeField> fields,
+    const routes& r
+) const
+{
+    transfer
+    (
+        List<nodeField>(fields), r.send, r.recv, nullptr, nullptr, assignOp()
+    );
+}
+
+
+void Foam::haloExchange::addToOwners
+(
+    std::initializer_list<nodeField> fields,
+    const routes& r
+) const
+{
+    transfer
+    (
+        List<nodeField>(fields), r.recv, r.send, nullptr, nullptr, addOp()
+    );
+}
+
+
 // ************************************************************************* //

@@ -80,9 +80,18 @@ void Foam::shapeTransfer<Shape>::p2gPoints
 
     // (sized once for 8 values per node, whatever W: MUSL maps with and
     // without forces in one sub-step)
+    // (cleared, and copied to the grid below, in the nodes of gridBox_
+    // only: the points reach no other, and the grid is zero outside it)
     soil.p2gScratch_.setSize(8*nBox + 8);
     scalar* __restrict__ rec = cacheLineAligned(soil.p2gScratch_.data());
-    std::fill(rec, rec + W*nBox, 0.0);
+    soil.gridBox_.forRows
+    (
+        soil.lattice_.stride(),
+        [&](const label begin, const label end)
+        {
+            std::fill(rec + W*begin, rec + W*end, 0.0);
+        }
+    );
 
     const label nPoints = soil.points_.size();
     for (label p = 0; p < nPoints; ++p)
@@ -205,7 +214,8 @@ void Foam::shapeTransfer<Shape>::p2gPoints
 
     recordsToGrid<Forces>
     (
-        rec, soil.gridMass_, soil.gridMomentum_, soil.gridForce_
+        rec, soil.gridMass_, soil.gridMomentum_, soil.gridForce_,
+        soil.gridBox_, soil.lattice_.stride()
     );
 }
 
@@ -299,10 +309,17 @@ void Foam::shapeTransfer<Shape>::g2pPoints
         (soil.transfer_ == materialPointSoil::transferType::APIC);
     const bool parallel = Pstream::parRun();
     const scalar alpha = soil.flipRatio_;
-    const double* vel = padVelocities(soil.gridVelocity_, soil.velocity4_);
+    const labelVector& stride = soil.lattice_.stride();
+    const double* vel = padVelocities
+    (
+        soil.gridVelocity_, soil.velocity4_, soil.pointsBox_, stride
+    );
     const double* velOld =
         Flip
-      ? padVelocities(soil.gridVelocityOld_, soil.velocityOld4_)
+      ? padVelocities
+        (
+            soil.gridVelocityOld_, soil.velocityOld4_, soil.pointsBox_, stride
+        )
       : nullptr;
     symmTensor* dStrain = soil.strainIncrement_.data();
     soil.leavingPoint_.clear();
@@ -384,7 +401,10 @@ void Foam::shapeTransfer<Shape>::stressPoints
     using namespace transferKernels;
     constexpr label S = Shape::supportSize;
     const scalar invDx = 1.0/soil.lattice_.dx();
-    const double* vel4 = padVelocities(vel, soil.velocity4_);
+    const double* vel4 = padVelocities
+    (
+        vel, soil.velocity4_, soil.pointsBox_, soil.lattice_.stride()
+    );
     symmTensor* dStrain = soil.strainIncrement_.data();
     const label nPoints = soil.points_.size();
     for (label start = 0; start < nPoints; start += pointBlock)
