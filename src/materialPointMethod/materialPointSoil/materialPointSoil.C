@@ -557,6 +557,10 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     (
         dict_.optionalSubDict("FLIPCoeffs").getOrDefault<scalar>("ratio", 0.99)
     ),
+    flipDamping_
+    (
+        dict_.optionalSubDict("FLIPCoeffs").getOrDefault<scalar>("damping", -1)
+    ),
     update_
     (
         selectEntry
@@ -624,6 +628,22 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
         FatalIOErrorInFunction(dict_)
             << "localDamping " << localDamping_ << " is not allowed: it must"
             << " lie in [0, 1)" << exit(FatalIOError);
+    }
+    const dictionary& flipDict = dict_.optionalSubDict("FLIPCoeffs");
+    if (flipDict.found("ratio") && flipDict.found("damping"))
+    {
+        FatalIOErrorInFunction(flipDict)
+            << "FLIPCoeffs gives both ratio and damping: give one (ratio, the"
+            << " FLIP share per sub-step in [0, 1]; or damping, the PIC share"
+            << " as a rate in [0, 1e6] 1/s, independent of the soil's time"
+            << " step)" << exit(FatalIOError);
+    }
+    if (flipDict.found("damping") && !(flipDamping_ >= 0 && flipDamping_ <= 1e6))
+    {
+        FatalIOErrorInFunction(flipDict)
+            << "FLIPCoeffs: damping " << flipDamping_ << " is not allowed: it"
+            << " must lie in [0, 1e6] 1/s (0: pure FLIP; the FLIP share of a"
+            << " sub-step dt is exp(-damping dt))" << exit(FatalIOError);
     }
     if (!(flipRatio_ >= 0 && flipRatio_ <= 1))
     {
@@ -702,7 +722,14 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
         << transferTypeNames[transfer_];
     if (transfer_ == transferType::FLIP)
     {
-        Info<< " (ratio " << flipRatio_ << ")";
+        if (flipDamping_ >= 0)
+        {
+            Info<< " (damping " << flipDamping_ << " 1/s)";
+        }
+        else
+        {
+            Info<< " (ratio " << flipRatio_ << ")";
+        }
     }
     Info<< ", update " << updateTypeNames[update_] << nl;
     if (gravityRamp_ > 0)

@@ -308,7 +308,7 @@ void Foam::shapeTransfer<Shape>::g2pPoints
     const bool apic =
         (soil.transfer_ == materialPointSoil::transferType::APIC);
     const bool parallel = Pstream::parRun();
-    const scalar alpha = soil.flipRatio_;
+    const scalar alpha = soil.flipShare(dt);
     const labelVector& stride = soil.lattice_.stride();
     const double* vel = padVelocities
     (
