@@ -448,6 +448,13 @@ def prepare(base, timeout):
         os.rename(initial, base.state('undecomposed'))
         copy_case(base.state('undecomposed'), initial)
         _step(initial, ['decomposePar'], tag='.prep')
+        # Decomposed before seeding (setMaterialPoints -parallel follows):
+        # no points to weigh the cells by, no cellWork field to read
+        dict_path = os.path.join(bare, 'system', 'decomposeParDict')
+        with open(dict_path) as f:
+            text = f.read()
+        with open(dict_path, 'w') as f:
+            f.write(re.sub(r'(?m)^\s*weightField\s+\S+;\s*\n', '', text))
         _step(bare, ['decomposePar'], tag='.prep')
     par = base.parallel
 

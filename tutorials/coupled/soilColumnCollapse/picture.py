@@ -66,6 +66,26 @@ def speedRange(mesh):
     return float(s.max()) if numpy.isfinite(s).all() else None
 
 
+def stackPanels(panels, png):
+    """The PNG files panels stacked top to bottom into png (VTK's image
+    origin is the bottom)"""
+    import vtk
+    append = vtk.vtkImageAppend()
+    append.SetAppendAxis(1)
+    for name in reversed(panels):
+        r = vtk.vtkPNGReader()
+        r.SetFileName(name)
+        r.Update()
+        image = vtk.vtkImageData()
+        image.DeepCopy(r.GetOutput())
+        append.AddInputData(image)
+    append.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(png)
+    writer.SetInputData(append.GetOutput())
+    writer.Write()
+
+
 def timeName(t):
     return ('%.6g' % t).replace('.', 'p')
 
@@ -231,22 +251,7 @@ def main(argv):
         print('picture.py: %s' % name)
     pv.Delete(view)
 
-    # The panels stacked top to bottom (VTK's image origin is the bottom)
-    import vtk
-    append = vtk.vtkImageAppend()
-    append.SetAppendAxis(1)
-    for name in reversed(panels):
-        r = vtk.vtkPNGReader()
-        r.SetFileName(name)
-        r.Update()
-        image = vtk.vtkImageData()
-        image.DeepCopy(r.GetOutput())
-        append.AddInputData(image)
-    append.Update()
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(args.png)
-    writer.SetInputData(append.GetOutput())
-    writer.Write()
+    stackPanels(panels, args.png)
     print('picture.py: %s (%d panels)' % (args.png, len(panels)))
     return 0
 

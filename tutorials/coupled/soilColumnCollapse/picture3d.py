@@ -30,6 +30,12 @@ import argparse
 import os
 import sys
 
+# The reader's blocks, the water's speed range, the time in file names and
+# the stacking of the panels: as the pseudo-2D picture does them
+sys.dont_write_bytecode = True     # (no __pycache__ in the case folder)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from picture import fetchBlocks, speedRange, stackPanels, timeName  # noqa: E402
+
 
 def parseArgs(argv):
     p = argparse.ArgumentParser(prog='picture3d.py')
@@ -41,38 +47,6 @@ def parseArgs(argv):
                    help='mid-plane only ahead of the soil front (clip) or '
                         'all of it, see-through (translucent)')
     return p.parse_args(argv)
-
-
-def fetchBlocks(reader, time):
-    """{'/internalMesh': dataset, '/lagrangian/materialPoints': dataset}"""
-    from paraview import servermanager
-    reader.UpdatePipeline(time)
-    found = {}
-
-    def walk(ds, prefix):
-        if ds is None:
-            return
-        if ds.IsA('vtkMultiBlockDataSet'):
-            for i in range(ds.GetNumberOfBlocks()):
-                name = None
-                if ds.HasMetaData(i):
-                    name = ds.GetMetaData(i).Get(ds.NAME())
-                walk(ds.GetBlock(i), prefix + '/' + (name or 'block%d' % i))
-        else:
-            found[prefix] = ds
-    walk(servermanager.Fetch(reader), '')
-    return found
-
-
-def speedRange(mesh):
-    import numpy
-    from vtk.util.numpy_support import vtk_to_numpy
-    array = mesh.GetCellData().GetArray('U')
-    if array is None:
-        return None
-    u = vtk_to_numpy(array).reshape(-1, 3)
-    s = numpy.sqrt((u**2).sum(axis=1))
-    return float(s.max()) if numpy.isfinite(s).all() else None
 
 
 def cloudPoints(ds):
@@ -108,10 +82,6 @@ def soilPolyData(x, d):
     array.SetName('displacement')
     poly.GetPointData().AddArray(array)
     return poly
-
-
-def timeName(t):
-    return ('%.6g' % t).replace('.', 'p')
 
 
 def styleBar(bar, title, position):
@@ -333,22 +303,7 @@ def main(argv):
         print('picture3d.py: %s' % name)
     pv.Delete(view)
 
-    # The panels stacked top to bottom (VTK's image origin is the bottom)
-    import vtk
-    append = vtk.vtkImageAppend()
-    append.SetAppendAxis(1)
-    for name in reversed(panels):
-        r = vtk.vtkPNGReader()
-        r.SetFileName(name)
-        r.Update()
-        image = vtk.vtkImageData()
-        image.DeepCopy(r.GetOutput())
-        append.AddInputData(image)
-    append.Update()
-    writer = vtk.vtkPNGWriter()
-    writer.SetFileName(args.png)
-    writer.SetInputData(append.GetOutput())
-    writer.Write()
+    stackPanels(panels, args.png)
     print('picture3d.py: %s (%d panels)' % (args.png, len(panels)))
     return 0
 
