@@ -90,15 +90,13 @@ def timeName(t):
     return ('%.6g' % t).replace('.', 'p')
 
 
-def main(argv):
-    args = parseArgs(argv)
-    caseDir = os.path.abspath(args.case)
-    foamFile = os.path.join(caseDir, 'case.foam')
+def openCase(case):
+    """ParaView's OpenFOAM reader on the reconstructed case (a case.foam
+    made if missing): the mesh's cell data and the soil's cloud if any"""
+    import paraview.simple as pv
+    foamFile = os.path.join(os.path.abspath(case), 'case.foam')
     if not os.path.exists(foamFile):
         open(foamFile, 'a').close()
-
-    import paraview.simple as pv
-
     reader = pv.OpenFOAMReader(FileName=foamFile)
     reader.CaseType = 'Reconstructed Case'
     reader.SkipZeroTime = 0
@@ -110,6 +108,15 @@ def main(argv):
     cloud = 'lagrangian/materialPoints'
     reader.MeshRegions = ['internalMesh'] \
         + ([cloud] if cloud in available else [])
+    return reader
+
+
+def main(argv):
+    args = parseArgs(argv)
+    import paraview.simple as pv
+    caseDir = os.path.abspath(args.case)
+    cloud = 'lagrangian/materialPoints'
+    reader = openCase(caseDir)
     # A free surface (the freeSurface effect): only the water's cells
     # drawn, where alpha.water >= 0.5 (the air white)
     import re

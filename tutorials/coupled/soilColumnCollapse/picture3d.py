@@ -34,7 +34,8 @@ import sys
 # the stacking of the panels: as the pseudo-2D picture does them
 sys.dont_write_bytecode = True     # (no __pycache__ in the case folder)
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from picture import fetchBlocks, speedRange, stackPanels, timeName  # noqa: E402
+from picture import (fetchBlocks, openCase, speedRange,  # noqa: E402
+                     stackPanels, timeName)
 
 
 def parseArgs(argv):
@@ -96,24 +97,10 @@ def styleBar(bar, title, position):
 def main(argv):
     import numpy
     args = parseArgs(argv)
-    caseDir = os.path.abspath(args.case)
-    foamFile = os.path.join(caseDir, 'case.foam')
-    if not os.path.exists(foamFile):
-        open(foamFile, 'a').close()
-
     import paraview.simple as pv
-
-    reader = pv.OpenFOAMReader(FileName=foamFile)
-    reader.CaseType = 'Reconstructed Case'
-    reader.SkipZeroTime = 0
-    reader.Createcelltopointfiltereddata = 0
-    reader.Adddimensionalunitstoarraynames = 0
-    reader.Refresh()
-    reader.UpdatePipelineInformation()
-    available = list(reader.GetProperty('MeshRegions').Available)
+    caseDir = os.path.abspath(args.case)
     cloud = 'lagrangian/materialPoints'
-    reader.MeshRegions = ['internalMesh'] \
-        + ([cloud] if cloud in available else [])
+    reader = openCase(caseDir)
     reader.CellArrays = ['U']
     reader.LagrangianArrays = [a for a in ['x', 'origId', 'origProcId']
                                if a in reader.LagrangianArrays.Available]
