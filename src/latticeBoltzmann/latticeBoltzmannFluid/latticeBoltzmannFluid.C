@@ -57,6 +57,24 @@ Foam::scalar positiveEntry
     return value;
 }
 
+// Whether the populations stream in place (streaming inPlace | twoLattice)
+bool streamsInPlace(const Foam::dictionary& dict)
+{
+    const Foam::word streaming
+    (
+        dict.getOrDefault<Foam::word>("streaming", "inPlace")
+    );
+    if (streaming != "inPlace" && streaming != "twoLattice")
+    {
+        FatalIOErrorInFunction(dict)
+            << "streaming " << streaming << " is not allowed: it must be"
+            << " inPlace (one lattice, the AA pattern: half the memory;"
+            << " the default) or twoLattice (the reference)"
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return streaming == "inPlace";
+}
+
 } // End anonymous namespace
 
 
@@ -143,7 +161,6 @@ void Foam::latticeBoltzmannFluid::checkUnits() const
 void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
 {
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
     const List<labelVector>& c = velocitySet_->c();
     const labelList& cellNode = lattice_.cellNode();
     const scalar maxU2 = sqr(machLimit_)*lattice::cs2;
@@ -159,8 +176,8 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
         vector j(Zero);
         for (label q = 0; q < Q; ++q)
         {
-            rho += f[q*nBox + n];
-            j += f[q*nBox + n]*vector(c[q]);
+            rho += f[layout_.at(q, n)];
+            j += f[layout_.at(q, n)]*vector(c[q]);
         }
         const vector u = j/rho;
         const bool bad =
@@ -276,6 +293,8 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         dimensionedScalar("rho", dimDensity, units_.rho0())
     ),
     AisCurrent_(true),
+    inPlace_(streamsInPlace(dict_)),
+    momentumStale_(true),
     halo_(lattice.halo()),
     restarted_(false),
     porosityInitialised_(false),
@@ -531,6 +550,19 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
 
     initialise();
     updateFields();
+
+    // What the populations cost (all processors)
+    const scalar populationBytes = returnReduce
+    (
+        scalar(sizeof(scalar))*(fA_.size() + fB_.size()),
+        sumOp<scalar>()
+    );
+    Info<< "Lattice Boltzmann streaming" << nl
+        << "    " << (inPlace_ ? "inPlace" : "twoLattice") << ": "
+        << (inPlace_ ? "one lattice (AA pattern)" : "two lattices (pull)")
+        << ", " << (inPlace_ ? 1 : 2)*Q*label(sizeof(scalar))
+        << " bytes per node, populations " << populationBytes/1048576.0
+        << " MiB" << nl << endl;
 }
 
 
@@ -588,15 +620,19 @@ void Foam::latticeBoltzmannFluid::prepareStream()
     {
         return;
     }
+    if (inPlace_ && layout_.natural())
+    {
+        startInPlace();
+    }
     scalarList& f = current();
     if (nSteps_ == 0 && !restarted_)
     {
         startAtForceBalance();
     }
-    halo_.exchangeSelected(f.data(), lattice_.nBox());
+    exchangeHalo(f.data());
     if (boundaries_->timeVarying())
     {
-        boundaries_->update(units_, U_, p_, f.cdata());
+        boundaries_->update(units_, U_, p_, f.cdata(), layout_);
     }
     if (writtenDrag_.size() && nSteps_ == 0 && dragX_.size())
     {
@@ -626,6 +662,7 @@ void Foam::latticeBoltzmannFluid::prepareStream()
     boundaries_->fill
     (
         f.data(),
+        layout_,
         porosity_.size() ? porosity_.cdata() : nullptr,
         freeSurface_.get(),
         units_.accelerationToLattice(bodyAcceleration_)
@@ -652,7 +689,6 @@ void Foam::latticeBoltzmannFluid::streamedState
 {
     // As the kernel forms them (lbmKernel.H)
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
     const List<labelVector>& c = velocitySet_->c();
     const scalarList& f = current();
     rho = 0;
@@ -661,10 +697,10 @@ void Foam::latticeBoltzmannFluid::streamedState
     for (label q = 0; q < Q; ++q)
     {
         const vector cq(c[q]);
-        const scalar fq = f[q*nBox + n - offset_[q]];
+        const scalar fq = f[layout_.at(q, n - offset_[q])];
         rho += fq;
         j += fq*cq;
-        p += f[q*nBox + n]*cq;
+        p += f[layout_.at(q, n)]*cq;
     }
     const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
     Fo = eps*units_.accelerationToLattice(bodyAcceleration_);
@@ -682,11 +718,24 @@ void Foam::latticeBoltzmannFluid::step()
     prepareStream();
     scalarList& f = current();
 
+    const label Q = velocitySet_->Q();
+    labelList srcBase(Q), dstBase(Q), oldBase(Q);
+    const lbmLayout& after = inPlace_ ? nextLayout_ : layout_;
+    for (label q = 0; q < Q; ++q)
+    {
+        srcBase[q] = layout_.at(q, -offset_[q]);
+        dstBase[q] = after.base(q);
+        oldBase[q] = layout_.base(q);
+    }
+
     lbmKernelArgs a;
     a.fOld = f.cdata();
-    a.fNew = next().data();
+    a.fNew = inPlace_ ? f.data() : next().data();
     a.nBox = nBox;
     a.offset = offset_.cdata();
+    a.srcBase = srcBase.cdata();
+    a.dstBase = dstBase.cdata();
+    a.oldBase = oldBase.cdata();
     // (the water's runs: without the nodes inside bodies)
     // (with a free surface: without the gas nodes)
     const List<latticeMesh::nodeRun>& runs =
@@ -715,6 +764,16 @@ void Foam::latticeBoltzmannFluid::step()
         a.relaxUy = relaxUy_.cdata();
         a.relaxUz = relaxUz_.cdata();
         a.givenDrag = givenDrag_;
+        if (inPlace_ && !givenDrag_)
+        {
+            if (momentumStale_)
+            {
+                sumMomentum();
+            }
+            a.momX = momX_.data();
+            a.momY = momY_.data();
+            a.momZ = momZ_.data();
+        }
     }
     a.omega = 1.0/units_.tau();
     a.smagorinsky = smagorinsky_;
@@ -725,6 +784,14 @@ void Foam::latticeBoltzmannFluid::step()
     prepared_ = false;
 
     const scalar maxU2 = sqr(machLimit_)*lattice::cs2;
+    if (inPlace_)
+    {
+        Foam::Swap(layout_, nextLayout_);
+    }
+    else
+    {
+        AisCurrent_ = !AisCurrent_;
+    }
     if
     (
         !std::isfinite(stats_.mass)
@@ -732,10 +799,75 @@ void Foam::latticeBoltzmannFluid::step()
      || !(stats_.u2Max <= maxU2)
     )
     {
-        instability(next());
+        instability(current());
     }
+}
 
-    AisCurrent_ = !AisCurrent_;
+
+void Foam::latticeBoltzmannFluid::startInPlace()
+{
+    // Natural to swapped: exchange the slots of q and opp(q) at every node
+    // (the next step then pulls from the neighbours and pushes, lbmLayout.H)
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const labelList& opp = velocitySet_->opp();
+    const label block = layout_.block();
+    const label pad = (block - nBox)/2;
+    scalarList& f = current();
+    for (label q = 0; q < Q; ++q)
+    {
+        if (q < opp[q])
+        {
+            std::swap_ranges
+            (
+                f.begin() + q*block,
+                f.begin() + (q + 1)*block,
+                f.begin() + opp[q]*block
+            );
+        }
+    }
+    layout_ = lbmLayout(lbmLayout::SWAPPED, nBox, opp, offset_, pad);
+    nextLayout_ = lbmLayout(lbmLayout::PUSHED, nBox, opp, offset_, pad);
+    momentumStale_ = true;
+}
+
+
+void Foam::latticeBoltzmannFluid::sumMomentum()
+{
+    // As the two-lattice loop sums the node's old populations (lbmKernel.H)
+    const label Q = velocitySet_->Q();
+    const label nBox = lattice_.nBox();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& f = current();
+    momX_.setSize(nBox, 0.0);
+    momY_.setSize(nBox, 0.0);
+    momZ_.setSize(nBox, 0.0);
+    for (const label n : lattice_.cellNode())
+    {
+        scalar px = 0, py = 0, pz = 0;
+        for (label q = 0; q < Q; ++q)
+        {
+            const scalar fq = f[layout_.at(q, n)];
+            px += c[q].x()*fq;
+            py += c[q].y()*fq;
+            pz += c[q].z()*fq;
+        }
+        momX_[n] = px;
+        momY_[n] = py;
+        momZ_[n] = pz;
+    }
+    momentumStale_ = false;
+}
+
+
+void Foam::latticeBoltzmannFluid::exchangeHalo(scalar* f) const
+{
+    labelList start(velocitySet_->Q());
+    forAll(start, q)
+    {
+        start[q] = layout_.base(q);
+    }
+    halo_.exchangeSelected(f, start);
 }
 
 
@@ -752,17 +884,17 @@ void Foam::latticeBoltzmannFluid::startAtForceBalance()
         return;
     }
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
     const List<labelVector>& c = velocitySet_->c();
     const scalarList& w = velocitySet_->w();
     const vector g = units_.accelerationToLattice(bodyAcceleration_);
     scalarList& f = current();
+    momentumStale_ = true;
     for (const label n : lattice_.cellNode())
     {
         scalar rho = 0;
         for (label q = 0; q < Q; ++q)
         {
-            rho += f[q*nBox + n];
+            rho += f[layout_.at(q, n)];
         }
         vector F = (porosity_.size() ? porosity_[n] : 1.0)*g;
         if (Fx_.size())
@@ -771,7 +903,7 @@ void Foam::latticeBoltzmannFluid::startAtForceBalance()
         }
         for (label q = 0; q < Q; ++q)
         {
-            f[q*nBox + n] += 1.5*w[q]*(vector(c[q]) & F);
+            f[layout_.at(q, n)] += 1.5*w[q]*(vector(c[q]) & F);
         }
     }
 }

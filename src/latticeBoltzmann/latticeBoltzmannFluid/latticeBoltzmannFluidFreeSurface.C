@@ -41,6 +41,9 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
             gasPressure, fillMargin, surfaceTension
         )
     );
+    // (where the populations are: read through the fluid's layout)
+    freeSurface_->setLayout(layout_);
+    momentumStale_ = true;
     // (a pressure patch's value at or below the gas's is air outside)
     boundaries_->setGasPressure(gasPressure, p_, units_);
     scalarList& f = current();
@@ -104,6 +107,7 @@ void Foam::latticeBoltzmannFluid::updateInterface()
         return;
     }
     scalarList& f = current();
+    momentumStale_ = true;
     setFreeSurfaceForces();
     freeSurface_->convert
     (

@@ -29,8 +29,24 @@ void Foam::latticeBoltzmannFluid::initialise()
     const label nBox = lattice_.nBox();
     const labelList& cellNode = lattice_.cellNode();
 
-    fA_.setSize(Q*nBox, 0.0);
-    fB_.setSize(Q*nBox, 0.0);
+    // (in place: a pad around each direction's slots, lbmLayout.H)
+    label pad = 0;
+    if (inPlace_)
+    {
+        for (const label o : offset_)
+        {
+            pad = max(pad, mag(o));
+        }
+    }
+    layout_ = lbmLayout
+    (
+        lbmLayout::NATURAL, nBox, velocitySet_->opp(), offset_, pad
+    );
+    fA_.setSize(layout_.size(), 0.0);
+    if (!inPlace_)
+    {
+        fB_.setSize(layout_.size(), 0.0);
+    }
     AisCurrent_ = true;
 
     auto popIO = [&](const label q, IOobject::readOption r)
@@ -73,7 +89,10 @@ void Foam::latticeBoltzmannFluid::initialise()
         scalarList& f = current();
         for (label q = 0; q < Q; ++q)
         {
-            readNodeField(lattice_, "lbmF" + Foam::name(q), f.data() + q*nBox);
+            readNodeField
+            (
+                lattice_, "lbmF" + Foam::name(q), f.data() + layout_.base(q)
+            );
         }
 
         // Porous flow: the porosity the populations were made with
@@ -123,7 +142,7 @@ void Foam::latticeBoltzmannFluid::initialise()
             for (label q = 0; q < Q; ++q)
             {
                 const scalar cu = vector(c[q]) & u;
-                f[q*nBox + cellNode[celli]] =
+                f[layout_.at(q, cellNode[celli])] =
                     w[q]*rho*(1 + 3*cu + 4.5*cu*cu - 1.5*magSqr(u));
             }
         }
@@ -140,7 +159,7 @@ void Foam::latticeBoltzmannFluid::initialise()
         }
         for (label q = 0; q < Q; ++q)
         {
-            mass += f[q*nBox + n];
+            mass += f[layout_.at(q, n)];
         }
     }
     mass0_ = returnReduce(mass, sumOp<scalar>());

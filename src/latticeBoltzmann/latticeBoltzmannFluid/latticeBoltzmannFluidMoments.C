@@ -25,12 +25,11 @@ Description
 Foam::scalar Foam::latticeBoltzmannFluid::nodePressure(const label n) const
 {
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
     const scalarList& f = current();
     scalar rho = 0;
     for (label q = 0; q < Q; ++q)
     {
-        rho += f[q*nBox + n];
+        rho += f[layout_.at(q, n)];
     }
     const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
     return units_.pressure(rho)/eps;
@@ -51,12 +50,13 @@ void Foam::latticeBoltzmannFluid::wallForce
     // link takes its population from a neighbour); the next step
     // exchanges the same values again
     scalarList& f = current();
-    halo_.exchangeSelected(f.data(), lattice_.nBox());
+    exchangeHalo(f.data());
 
     vector P, M, Prest, Mrest;
     boundaries_->wallMomentum
     (
         f.cdata(),
+        layout_,
         porosity_.size() ? porosity_.cdata() : nullptr,
         selectedPatches,
         selectedBodies,
@@ -89,7 +89,7 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
     // The populations the next step collides: the current ones pulled,
     // with the halo and the boundaries' wall slots
     scratch_ = current();
-    halo_.exchangeSelected(scratch_.data(), nBox);
+    exchangeHalo(scratch_.data());
     if (freeSurface_)
     {
         // (the gas's populations into the interface nodes, as the step
@@ -105,6 +105,7 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
     boundaries_->fill
     (
         scratch_.data(),
+        layout_,
         porosity_.size() ? porosity_.cdata() : nullptr,
         freeSurface_.get(),
         units_.accelerationToLattice(bodyAcceleration_)
@@ -125,7 +126,7 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
         vector j(Zero);
         for (label q = 0; q < Q; ++q)
         {
-            f[q] = scratch_[q*nBox + n - offset_[q]];
+            f[q] = scratch_[layout_.at(q, n - offset_[q])];
             rho += f[q];
             j += f[q]*vector(c[q]);
         }
@@ -159,7 +160,6 @@ void Foam::latticeBoltzmannFluid::writeViscousStress()
 Foam::vector Foam::latticeBoltzmannFluid::momentum() const
 {
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
     const List<labelVector>& c = velocitySet_->c();
     const scalarList& f = current();
     vector j(Zero);
@@ -171,7 +171,7 @@ Foam::vector Foam::latticeBoltzmannFluid::momentum() const
         }
         for (label q = 0; q < Q; ++q)
         {
-            j += f[q*nBox + n]*vector(c[q]);
+            j += f[layout_.at(q, n)]*vector(c[q]);
         }
     }
     reduce(j, sumOp<vector>());
@@ -218,7 +218,6 @@ Foam::label Foam::latticeBoltzmannFluid::nNodes() const
 void Foam::latticeBoltzmannFluid::updateFields()
 {
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
     const List<labelVector>& c = velocitySet_->c();
     const labelList& cellNode = lattice_.cellNode();
     const scalarList& f = current();
@@ -250,7 +249,7 @@ void Foam::latticeBoltzmannFluid::updateFields()
         vector j(Zero);
         for (label q = 0; q < Q; ++q)
         {
-            const scalar fq = f[q*nBox + n];
+            const scalar fq = f[layout_.at(q, n)];
             rho += fq;
             j += fq*vector(c[q]);
         }
@@ -327,7 +326,7 @@ void Foam::latticeBoltzmannFluid::nodalVelocity
         vector j(Zero);
         for (label q = 0; q < Q; ++q)
         {
-            const scalar fq = f[q*nBox + n];
+            const scalar fq = f[layout_.at(q, n)];
             rho += fq;
             j += fq*vector(c[q]);
         }
@@ -350,7 +349,6 @@ Foam::scalar Foam::latticeBoltzmannFluid::populationSum() const
         return freeSurface_->storedSum(current().cdata());
     }
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
     const scalarList& f = current();
     scalar sum = 0;
     for (const label n : lattice_.cellNode())
@@ -362,7 +360,7 @@ Foam::scalar Foam::latticeBoltzmannFluid::populationSum() const
         }
         for (label q = 0; q < Q; ++q)
         {
-            sum += f[q*nBox + n];
+            sum += f[layout_.at(q, n)];
         }
     }
     return sum;
@@ -395,12 +393,23 @@ Foam::wordList Foam::latticeBoltzmannFluid::populationFiles() const
 
 void Foam::latticeBoltzmannFluid::writePopulations() const
 {
+    // The water's populations; a node without water (inside a body, or
+    // gas) at rest at the reference density: its slots hold what the
+    // boundaries and the streaming last left there, which no step reads
+    // (a body's links are filled each step, a gas node that fills is set
+    // from its neighbours), and which would differ between the layouts
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
+    const scalarList& w = velocitySet_->w();
     const scalarList& f = current();
+    const labelList& cellNode = lattice_.cellNode();
+    scalarList fq(lattice_.nBox(), 0.0);
     for (label q = 0; q < Q; ++q)
     {
-        writeNodeField(lattice_, "lbmF" + Foam::name(q), f.cdata() + q*nBox);
+        for (const label n : cellNode)
+        {
+            fq[n] = water(n) ? f[layout_.at(q, n)] : w[q];
+        }
+        writeNodeField(lattice_, "lbmF" + Foam::name(q), fq.cdata());
     }
 
     if (displacement_)

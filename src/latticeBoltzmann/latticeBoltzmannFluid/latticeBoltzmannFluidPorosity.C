@@ -68,9 +68,11 @@ void Foam::latticeBoltzmannFluid::addDisplacementSource
     // it would take a pressure deficit of about 3/2 of the source per step,
     // and a column lifting off an inlet would stall on its own suction.)
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
     const scalarList& w = velocitySet_->w();
     scalarList& f = current();
+    // (the momentum the nodes carry, summed again from the changed
+    // populations: round-off as the two-lattice step has it)
+    momentumStale_ = true;
     if (heldPorosity_.empty())
     {
         heldPorosity_ = porosity_;
@@ -96,7 +98,7 @@ void Foam::latticeBoltzmannFluid::addDisplacementSource
         {
             for (label q = 0; q < Q; ++q)
             {
-                f[q*nBox + n] += w[q]*source;
+                f[layout_.at(q, n)] += w[q]*source;
             }
             added += source;
         }
@@ -153,10 +155,10 @@ void Foam::latticeBoltzmannFluid::setPorosity
     // (From the populations, which hold rho(p) and U at equilibrium: the
     // fields have been rewritten with Guo's velocity since.)
     const label Q = velocitySet_->Q();
-    const label nBox = lattice_.nBox();
     const List<labelVector>& c = velocitySet_->c();
     const scalarList& w = velocitySet_->w();
     scalarList& f = current();
+    momentumStale_ = true;
     scalar mass = 0;
     for (const label n : lattice_.cellNode())
     {
@@ -164,8 +166,8 @@ void Foam::latticeBoltzmannFluid::setPorosity
         vector j(Zero);
         for (label q = 0; q < Q; ++q)
         {
-            rhoP += f[q*nBox + n];
-            j += f[q*nBox + n]*vector(c[q]);
+            rhoP += f[layout_.at(q, n)];
+            j += f[layout_.at(q, n)]*vector(c[q]);
         }
         const scalar eps = porosity_[n];
         const scalar rho = 1 + eps*(rhoP - 1);
@@ -173,7 +175,7 @@ void Foam::latticeBoltzmannFluid::setPorosity
         for (label q = 0; q < Q; ++q)
         {
             const scalar cu = vector(c[q]) & u;
-            f[q*nBox + n] =
+            f[layout_.at(q, n)] =
                 w[q]*rho*(1 + 3*cu + (4.5*cu*cu - 1.5*magSqr(u))/eps);
         }
         mass += rho;

@@ -542,9 +542,30 @@ Foam::lbmBoundaries::lbmBoundaries
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::lbmBoundaries::linkSlots& Foam::lbmBoundaries::slots
+(
+    const lbmLayout& layout
+) const
+{
+    linkSlots& s = slots_[layout.layout()];
+    if (!s.made)
+    {
+        s.copyGhost = layout.remap(copyGhost_);
+        s.copySource = layout.remap(copySource_);
+        s.bodyGhost = layout.remap(bodyGhost_);
+        s.bodyA = layout.remap(bodySourceA_);
+        s.bodyB = layout.remap(bodySourceB_);
+        s.abbGhost = layout.remap(abbGhost_);
+        s.made = true;
+    }
+    return s;
+}
+
+
 inline Foam::scalar Foam::lbmBoundaries::pressureLinkValue
 (
     const scalar* f,
+    const lbmLayout& layout,
     const scalar* porosity,
     const label i,
     const scalar rhoPatch
@@ -559,7 +580,6 @@ inline Foam::scalar Foam::lbmBoundaries::pressureLinkValue
     //     f*_q(w) = f_q^eq(rho_w, u_x) + f*_q(x) - f_q^eq(rho_x, u_x)
     // Unlike plain anti-bounce-back this keeps the viscous stress at the
     // boundary, so the pressure is uniform across an inlet of a viscous flow.
-    const label nBox = lattice_.nBox();
     const label Q = vs_.Q();
     const List<labelVector>& c = vs_.c();
     const scalarList& w = vs_.w();
@@ -568,7 +588,7 @@ inline Foam::scalar Foam::lbmBoundaries::pressureLinkValue
     vector j(Zero);
     for (label q = 0; q < Q; ++q)
     {
-        const scalar fq = f[q*nBox + x];
+        const scalar fq = f[layout.at(q, x)];
         rho += fq;
         j += fq*vector(c[q]);
     }
@@ -581,21 +601,23 @@ inline Foam::scalar Foam::lbmBoundaries::pressureLinkValue
     const scalar rhoP = rhoPatch > 0 ? rhoPatch : abbRho_[i];
     const scalar rhoB = porosity ? 1.0 + porosity[x]*(rhoP - 1.0) : rhoP;
     const scalar rhoWall = 2.0*rhoB - rho;
-    return f[q*nBox + x] + (rhoWall - rho)*shape;
+    return f[layout.at(q, x)] + (rhoWall - rho)*shape;
 }
 
 
 void Foam::lbmBoundaries::fill
 (
     scalar* f,
+    const lbmLayout& layout,
     const scalar* porosity,
     const lbmFreeSurface* freeSurface,
     const vector& g
 ) const
 {
+    const linkSlots& sl = slots(layout);
     const label n = copyGhost_.size();
-    const label* ghost = copyGhost_.cdata();
-    const label* src = copySource_.cdata();
+    const label* ghost = sl.copyGhost.cdata();
+    const label* src = sl.copySource.cdata();
     const scalar* val = copyValue_.cdata();
     for (label i = 0; i < n; ++i)
     {
@@ -606,9 +628,9 @@ void Foam::lbmBoundaries::fill
     // wall slot)
     forAll(bodyGhost_, i)
     {
-        f[bodyGhost_[i]] =
-            bodyWeightA_[i]*f[bodySourceA_[i]]
-          + bodyWeightB_[i]*f[bodySourceB_[i]];
+        f[sl.bodyGhost[i]] =
+            bodyWeightA_[i]*f[sl.bodyA[i]]
+          + bodyWeightB_[i]*f[sl.bodyB[i]];
     }
 
     if (abbGhost_.empty())
@@ -637,20 +659,20 @@ void Foam::lbmBoundaries::fill
             {
                 continue;
             }
-            f[abbGhost_[i]] =
+            f[sl.abbGhost[i]] =
                 freeSurface->interface(x) && dryPressureLink(i, rhoGas)
               ? pressureLinkValue
                 (
-                    f, porosity, i,
+                    f, layout, porosity, i,
                     freeSurface->gasLinkDensity(x, abbDir_[i], g)
                 )
-              : pressureLinkValue(f, porosity, i);
+              : pressureLinkValue(f, layout, porosity, i);
         }
         return;
     }
     forAll(abbGhost_, i)
     {
-        f[abbGhost_[i]] = pressureLinkValue(f, porosity, i);
+        f[sl.abbGhost[i]] = pressureLinkValue(f, layout, porosity, i);
     }
 }
 
@@ -658,6 +680,7 @@ void Foam::lbmBoundaries::fill
 void Foam::lbmBoundaries::wallMomentum
 (
     const scalar* f,
+    const lbmLayout& layout,
     const scalar* porosity,
     const boolList& selected,
     const boolList& selectedBodies,
@@ -723,7 +746,7 @@ void Foam::lbmBoundaries::wallMomentum
             if (patcha >= 0 && selected[patcha])
             {
                 // (at rest, density 1: both populations are w_q)
-                dP[a] = (f[opp[q]*nBox + x] + fIn)*out;
+                dP[a] = (f[layout.at(opp[q], x)] + fIn)*out;
                 dPrest[a] = 2.0*w[q]*out;
                 any = true;
             }
@@ -738,13 +761,22 @@ void Foam::lbmBoundaries::wallMomentum
         }
     };
 
+    const linkSlots& sl = slots(layout);
     forAll(copyGhost_, i)
     {
-        add(copyGhost_[i], f[copySource_[i]] + copyValue_[i], copyPatch_[i]);
+        add
+        (
+            copyGhost_[i], f[sl.copySource[i]] + copyValue_[i],
+            copyPatch_[i]
+        );
     }
     forAll(abbGhost_, i)
     {
-        add(abbGhost_[i], pressureLinkValue(f, porosity, i), abbPatch_[i]);
+        add
+        (
+            abbGhost_[i], pressureLinkValue(f, layout, porosity, i),
+            abbPatch_[i]
+        );
     }
 
     // Into bodies: F = sum c_i [f*_i(x) + f_-i(x, t + 1)] (Ladd 1994; Mei
@@ -764,9 +796,9 @@ void Foam::lbmBoundaries::wallMomentum
             s + cq.x()*stride.x() + cq.y()*stride.y() + cq.z()*stride.z();
         const vector cOut(-vector(cq));
         const scalar fIn =
-            bodyWeightA_[k]*f[bodySourceA_[k]]
-          + bodyWeightB_[k]*f[bodySourceB_[k]];
-        const vector dP = (f[bodySourceA_[k]] + fIn)*cOut;
+            bodyWeightA_[k]*f[sl.bodyA[k]]
+          + bodyWeightB_[k]*f[sl.bodyB[k]];
+        const vector dP = (f[sl.bodyA[k]] + fIn)*cOut;
         const vector dPrest = 2.0*w[q]*cOut;
         const point r = C[nodeCell[x]] + bodyFraction_[k]*dx*cOut;
         P += dP;

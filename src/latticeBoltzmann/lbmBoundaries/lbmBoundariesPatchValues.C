@@ -156,7 +156,8 @@ void Foam::lbmBoundaries::update
     const lbmUnits& units,
     volVectorField& U,
     volScalarField& p,
-    const scalar* f
+    const scalar* f,
+    const lbmLayout& layout
 )
 {
     // The patches' Function1 at the current time (every processor, also
@@ -216,7 +217,7 @@ void Foam::lbmBoundaries::update
         scalar rhoX = 0;
         for (label q = 0; q < Q; ++q)
         {
-            rhoX += f[q*nBox + x];
+            rhoX += f[layout.at(q, x)];
         }
         const label patchi = abbPatch_[i];
         const scalar m = absorbRelax_[patchi];

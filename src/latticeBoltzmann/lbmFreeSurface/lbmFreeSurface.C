@@ -73,11 +73,10 @@ Foam::scalar Foam::lbmFreeSurface::density
     const label n
 ) const
 {
-    const label nBox = lattice_.nBox();
     scalar rho = 0;
     for (label q = 0; q < vs_.Q(); ++q)
     {
-        rho += f[q*nBox + n];
+        rho += f[layout_->at(q, n)];
     }
     return rho;
 }
@@ -93,13 +92,12 @@ void Foam::lbmFreeSurface::moments
 ) const
 {
     const label Q = vs_.Q();
-    const label nBox = lattice_.nBox();
     const List<labelVector>& c = vs_.c();
     rho = 0;
     vector j(Zero);
     for (label q = 0; q < Q; ++q)
     {
-        const scalar fq = f[q*nBox + n];
+        const scalar fq = f[layout_->at(q, n)];
         rho += fq;
         j += fq*vector(c[q]);
     }
@@ -143,6 +141,7 @@ Foam::lbmFreeSurface::lbmFreeSurface
     rhoU_(4*lattice.nBox(), 0.0),
     share_(lattice.nBox(), 0.0),
     offset_(vs.Q()),
+    layout_(nullptr),
     owned_(lattice.nBox(), false),
     stamp_(lattice.nBox(), 0),
     epoch_(0),
@@ -277,7 +276,6 @@ void Foam::lbmFreeSurface::reconstruct
 )
 {
     const label Q = vs_.Q();
-    const label nBox = lattice_.nBox();
     const List<labelVector>& c = vs_.c();
 
     // The mass each interface node exchanges, from the populations as
@@ -309,7 +307,7 @@ void Foam::lbmFreeSurface::reconstruct
             {
                 continue;
             }
-            f[q*nBox + y] = gasPopulation
+            f[layout_->at(q, y)] = gasPopulation
             (
                 f, x, q, u, eps, gs.density(-0.5*vector(c[q]))
             );
@@ -335,7 +333,7 @@ Foam::scalar Foam::lbmFreeSurface::gasPopulation
     const scalar cu = vector(vs_.c()[q]) & u;
     return
         2*vs_.w()[q]*rhoG*(1 + 4.5*cu*cu/eps - 1.5*magSqr(u)/eps)
-      - f[vs_.opp()[q]*lattice_.nBox() + x];
+      - f[layout_->at(vs_.opp()[q], x)];
 }
 
 
@@ -364,7 +362,6 @@ void Foam::lbmFreeSurface::pressureLinkMass
     // beside a reservoir at its own level filled up and blew up). Where
     // the patch holds the gas's pressure or less (air outside), the link
     // is a gas link and brings none.
-    const label nBox = lattice_.nBox();
     const labelList& opp = vs_.opp();
     const labelList& node = boundaries.pressureLinkNodes();
     const labelList& dir = boundaries.pressureLinkDirections();
@@ -377,7 +374,9 @@ void Foam::lbmFreeSurface::pressureLinkMass
             continue;
         }
         const scalar s = boundaries.dryPressureLink(i, rhoGas_) ? 0 : fill_[x];
-        mass_[x] += (s - 1)*(f[ghost[i]] - f[opp[dir[i]]*nBox + x]);
+        mass_[x] +=
+            (s - 1)
+           *(f[layout_->remap(ghost[i])] - f[layout_->at(opp[dir[i]], x)]);
     }
 }
 
@@ -437,7 +436,6 @@ void Foam::lbmFreeSurface::exchangeMass
 )
 {
     const label Q = vs_.Q();
-    const label nBox = lattice_.nBox();
     const labelList& opp = vs_.opp();
 
     for (const label x : interface_)
@@ -464,7 +462,7 @@ void Foam::lbmFreeSurface::exchangeMass
             }
             if (s != 0)
             {
-                dm += s*(f[q*nBox + y] - f[opp[q]*nBox + x]);
+                dm += s*(f[layout_->at(q, y)] - f[layout_->at(opp[q], x)]);
             }
         }
         mass_[x] += dm;

@@ -27,7 +27,6 @@ void Foam::lbmFreeSurface::spreadOverLiquid(scalar* f, scalar dm) const
         return;
     }
     const label Q = vs_.Q();
-    const label nBox = lattice_.nBox();
     const scalarList& w = vs_.w();
     scalar nLiquid = 0;
     for (const label n : lattice_.cellNode())
@@ -44,7 +43,7 @@ void Foam::lbmFreeSurface::spreadOverLiquid(scalar* f, scalar dm) const
         {
             for (label q = 0; q < Q; ++q)
             {
-                f[q*nBox + n] += w[q]*drho;
+                f[layout_->at(q, n)] += w[q]*drho;
             }
         }
     }
@@ -183,13 +182,13 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
             for (label q = 0; q < Q; ++q)
             {
                 const scalar cu = vector(c[q]) & u;
-                f[q*nBox + n] =
+                f[layout_->at(q, n)] =
                     w[q]*rho*(1 + 3*cu + 4.5*cu*cu/eps - 1.5*u2);
             }
             // Guo: the populations carry rho u + F/2, F = n rho g
             for (label q = 0; q < Q; ++q)
             {
-                f[q*nBox + n] += 1.5*w[q]*eps*rho*(vector(c[q]) & g);
+                f[layout_->at(q, n)] += 1.5*w[q]*eps*rho*(vector(c[q]) & g);
             }
             rhoN[n] = rho;
             mass_[n] = 0;
@@ -282,7 +281,7 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
             // stays in the node's own populations
             for (label q = 0; q < Q; ++q)
             {
-                f[q*nBox + n] += w[q]*excess;
+                f[layout_->at(q, n)] += w[q]*excess;
             }
             rhoN[n] += excess;
             continue;

@@ -92,7 +92,7 @@ void Foam::lbmFreeSurface::setFromFraction
             const scalar rhoG = 1 + porosity(n)*(rhoGas_ - 1);
             for (label q = 0; q < Q; ++q)
             {
-                f[q*nBox + n] = w[q]*rhoG;
+                f[layout_->at(q, n)] = w[q]*rhoG;
             }
         }
     }
@@ -211,7 +211,6 @@ Foam::wordList Foam::lbmFreeSurface::stateFiles() const
 Foam::scalar Foam::lbmFreeSurface::mass(const scalar* f) const
 {
     const label Q = vs_.Q();
-    const label nBox = lattice_.nBox();
     scalar m = 0;
     for (const label n : lattice_.cellNode())
     {
@@ -221,7 +220,7 @@ Foam::scalar Foam::lbmFreeSurface::mass(const scalar* f) const
             scalar rho = 0;
             for (label q = 0; q < Q; ++q)
             {
-                rho += f[q*nBox + n];
+                rho += f[layout_->at(q, n)];
             }
             m += capacity(rho, n);
         }

@@ -360,6 +360,25 @@ void Foam::haloExchange::exchangeSelected
 }
 
 
+void Foam::haloExchange::exchangeSelected
+(
+    scalar* data,
+    const labelUList& componentStart
+) const
+{
+    List<nodeField> lists(nSelectable_);
+    forAll(lists, ci)
+    {
+        lists[ci] = nodeField{data + componentStart[ci], 1};
+    }
+    transfer
+    (
+        lists, sendNodes_, recvNodes_, &sendComponents_, &recvComponents_,
+        assignOp()
+    );
+}
+
+
 void Foam::haloExchange::exchange(labelUList& data) const
 {
     transfer

@@ -213,6 +213,11 @@ static scalarList collideOne
     a.fNew = fNew.data();
     a.nBox = 1;
     a.offset = offset.cdata();
+    // (one node, natural layout: direction q at q)
+    const labelList base(identity(Q));
+    a.srcBase = base.cdata();
+    a.dstBase = base.cdata();
+    a.oldBase = base.cdata();
     a.runs = runs;
     a.nRuns = 1;
     a.Fx = Fx.cdata();

@@ -191,9 +191,9 @@ void Foam::physicsEffects::buoyancy::balanced
 void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
 {
     const latticeMesh& lattice = fluid_.lattice();
-    const label nBox = lattice.nBox();
     const label Q = fluid_.velocities().Q();
     const scalarList& f = fluid_.populations();
+    const lbmLayout& layout = fluid_.layout();
     const scalarList& eps = fluid_.porosity();
     const labelList& cellNode = lattice.cellNode();
     const vector g =
@@ -206,7 +206,7 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         scalar rho = 0;
         for (label q = 0; q < Q; ++q)
         {
-            rho += f[q*nBox + n];
+            rho += f[layout.at(q, n)];
         }
         weight_[n] = eps[n]*g;
         pressure_[n] = (rho - 1)/(3*eps[n]);
