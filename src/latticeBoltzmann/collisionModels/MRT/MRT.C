@@ -169,43 +169,21 @@ void Foam::collisionModels::MRT::streamCollide
     lbmKernelStats& stats
 ) const
 {
-    const label Q = velocitySet_.Q();
     const scalar omega = a.omega;
     const scalar omegaOdd = 1.0/(magic_/(1.0/omega - 0.5) + 0.5);
-
-    scalarList s(Q), isShear(Q, 0.0);
-    forAll(s, k)
-    {
-        const label d = degree_[k];
-        if (d < 2)
-        {
-            s[k] = 1.0;
-        }
-        else if (d == 2)
-        {
-            if (isTrace_[k] && omegaBulk_ > 0)
-            {
-                s[k] = omegaBulk_;
-            }
-            else
-            {
-                s[k] = omega;
-                isShear[k] = 1.0;
-            }
-        }
-        else
-        {
-            s[k] = (d % 2) ? omegaOdd : omegaEven_;
-        }
-    }
-
-    const scalar* M = M_.cdata();
-    const scalar* sp = s.cdata();
-    const scalar* shear = isShear.cdata();
+    const scalar sBulk = omegaBulk_ > 0 ? omegaBulk_ : 0;
+    const scalar bulkFixed = omegaBulk_ > 0 ? 1 : 0;
+    const scalar sEven = omegaEven_;
     dispatch<MRTOperator>
     (
         a, stats,
-        [=](auto vs) { return MRTOperator<decltype(vs)>{M, sp, shear}; }
+        [=](auto vs)
+        {
+            return MRTOperator<decltype(vs)>
+            {
+                sBulk, bulkFixed, omegaOdd, sEven
+            };
+        }
     );
 }
 

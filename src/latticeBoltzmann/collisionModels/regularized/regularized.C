@@ -41,12 +41,25 @@ void Foam::collisionModels::regularized::streamCollide
     lbmKernelStats& stats
 ) const
 {
-    const bool recursive = recursive_;
-    dispatch<regularizedOperator>
-    (
-        a, stats,
-        [=](auto vs) { return regularizedOperator<decltype(vs)>{recursive}; }
-    );
+    if (recursive_)
+    {
+        dispatch<regularizedRecursiveOperator>
+        (
+            a, stats,
+            [](auto vs)
+            {
+                return regularizedRecursiveOperator<decltype(vs)>{};
+            }
+        );
+    }
+    else
+    {
+        dispatch<regularizedOperator>
+        (
+            a, stats,
+            [](auto vs) { return regularizedOperator<decltype(vs)>{}; }
+        );
+    }
 }
 
 
