@@ -14,7 +14,8 @@
 #             [--cloud NAME:N | --cloud NAME:NMIN:NMAX ...] \
 #             [--cloud-field CLOUD:NAME:MIN:MAX ...] [--decomposed] \
 #             [--png FILE [--resolution WxH] [--colour-by NAME]
-#              [--cloud-colour-by NAME[:COMPONENT]:MIN:MAX] [--slice x|y|z]]
+#              [--cloud-colour-by NAME[:COMPONENT]:MIN:MAX]
+#              [--cloud-body FRACTION] [--slice x|y|z]]
 #
 #     It opens the case's .foam file (DIR/<DIR's name>.foam, as paraFoam
 #     -touch makes it, made empty if the case has none), goes to the requested
@@ -33,7 +34,10 @@
 #     about their spacing in the picture, dark grey or coloured by a field
 #     of the cloud (--cloud-colour-by stress:YY:-2e5:0: the vertical stress,
 #     components named as ParaView names them: X, Y, Z, XX, YY, ZZ, XY, YZ,
-#     XZ, or Magnitude).
+#     XZ, or Magnitude); with --cloud-body FRACTION the clouds are drawn as
+#     a body instead: where the cell field FRACTION (soilFraction) is half
+#     its largest or more, coloured by the --cloud-colour-by field spread
+#     from the points (a sheared body drawn as points shows stripes).
 #
 #     Prints one 'PASS ...' or 'FAIL ...' line per check, then a summary,
 #     and exits 1 if any check failed (2 on a usage error), 0 otherwise.
@@ -165,6 +169,12 @@ def parseArgs(argv):
                    metavar='NAME[:COMPONENT]:MIN:MAX',
                    help='field of the clouds to colour their points by in '
                         'the PNG, with its colour range')
+    p.add_argument('--cloud-body', dest='cloudBody', default=None,
+                   metavar='FRACTION',
+                   help='draw the clouds as a body instead of points: the '
+                        'mesh where the cell field FRACTION (the soil '
+                        'fraction) is half its largest or more, coloured '
+                        'by --cloud-colour-by spread from the points')
     args = p.parse_args(argv)
 
     if args.time != 'latest':
@@ -377,11 +387,45 @@ def render(args, reader, time, blocks, clouds, colourField):
             else (size[0] * size[1] * size[2] / nPoints) ** (1.0 / 3.0)
         pixels = 0.8 * min(width, height) / max(extent, 1e-300)
         pointSize = min(6.0, max(1.5, 0.9 * spacing * pixels))
+    body = getattr(args, 'cloudBody', None)
     for region in clouds:
         cloud = pv.ExtractBlock(Input=reader, Selectors=['/Root/' + region])
-        cloudDisplay = pv.Show(cloud, view)
-        cloudDisplay.Representation = 'Points'
         cloudColour = getattr(args, 'cloudColourBy', None)
+        if body and cloudColour and bounds:
+            # The body: the fraction interpolated to the mesh's points and
+            # clipped at half its largest (a smooth outline), the cloud's
+            # field spread over it by a Gaussian kernel of 1.5 cells. Drawn
+            # as points, a sheared body shows stripes where its rows of
+            # points moved apart (tutorials/coupled/soilColumnCollapse's
+            # README)
+            fraction = pv.ExtractBlock(Input=reader,
+                                       Selectors=['/Root/internalMesh'])
+            largest = 0.0
+            for ds in asList(blocks.get('/internalMesh')):
+                a = ds.GetCellData().GetArray(body)
+                if a is not None:
+                    largest = max(largest, a.GetRange()[1])
+            clip = pv.Clip(Input=pv.CellDatatoPointData(Input=fraction))
+            clip.ClipType = 'Scalar'
+            clip.Scalars = ['POINTS', body]
+            clip.Value = 0.5*largest
+            clip.Invert = 0
+            cells = max(1, sum(ds.GetNumberOfCells()
+                               for ds in asList(blocks.get('/internalMesh'))))
+            dx = (max(size[0], 1e-300)*max(size[1], 1e-300)
+                  *(size[2] if not flat else 1.0)/cells) \
+                ** (1.0/(2 if flat else 3))
+            spread = pv.PointDatasetInterpolator(
+                Input=pv.MergeBlocks(Input=cloud),
+                Source=pv.MergeBlocks(Input=clip))
+            spread.Kernel = 'GaussianKernel'
+            spread.Kernel.Radius = 1.5*dx
+            spread.NullPointsStrategy = 'Closest Point'
+            cloudDisplay = pv.Show(spread, view)
+            cloudDisplay.Representation = 'Surface'
+        else:
+            cloudDisplay = pv.Show(cloud, view)
+            cloudDisplay.Representation = 'Points'
         if cloudColour:
             name, component, (lo, hi) = cloudColour
             if component:
@@ -409,6 +453,9 @@ def render(args, reader, time, blocks, clouds, colourField):
             cloudDisplay.RenderPointsAsSpheres = 1
         except AttributeError:
             pass
+        if flat and body and cloudColour:
+            # (the body on the mesh's front face, not inside the slab)
+            meshDisplay.Opacity = 1.0
         if flat:
             shift = [0.0, 0.0, 0.0]
             shift[thin] = 1.01 * size[thin]

@@ -31,6 +31,8 @@ def parseArgs(argv):
     p.add_argument('--times', type=float, nargs='+', default=[0.0, 3.0, 6.0])
     p.add_argument('--png', default='soilColumnCollapse.png')
     p.add_argument('--width', type=int, default=900)
+    p.add_argument('--strainMax', type=float, default=2.0,
+                   help='top of the soil plastic strain colour scale')
     return p.parse_args(argv)
 
 
@@ -123,8 +125,8 @@ def main(argv):
     with open(os.path.join(caseDir, 'constant', 'physicsProperties')) as f:
         scene = re.search(r'^\s*effects\s*\(([^)]*)\)', f.read(), re.M)
     freeSurface = bool(scene) and 'freeSurface' in scene.group(1).split()
-    reader.CellArrays = ['U'] + (['alpha.water'] if freeSurface else [])
-    reader.LagrangianArrays = []
+    reader.CellArrays = ['U', 'soilFraction'] + (['alpha.water'] if freeSurface else [])
+    reader.LagrangianArrays = ['plasticStrain']
 
     times = reader.TimestepValues
     if isinstance(times, (int, float)):
@@ -141,6 +143,7 @@ def main(argv):
 
     # One colour range for all panels: the largest water speed shown
     uMax = 0.0
+    phiMax = 0.0
     bounds = None
     for t in chosen:
         blocks = fetchBlocks(reader, t)
@@ -155,6 +158,9 @@ def main(argv):
             print('picture.py: no finite U at t = %g' % t)
             return 1
         uMax = max(uMax, s)
+        phi = mesh.GetCellData().GetArray('soilFraction')
+        if phi is not None:
+            phiMax = max(phiMax, phi.GetRange()[1])
     if uMax <= 0:
         uMax = 1.0
     print('picture.py: times %s, water speed 0 to %.4g m/s'
@@ -216,17 +222,70 @@ def main(argv):
     bar.Position = [0.89, 0.15]
     bar.ScalarBarLength = 0.7
 
+    strainBar = None
     if cloud in reader.MeshRegions:
-        points = pv.ExtractBlock(Input=reader, Selectors=['/Root/' + cloud])
-        pointsDisplay = pv.Show(points, view)
-        pointsDisplay.Representation = 'Points'
-        pointsDisplay.ColorArrayName = ['POINTS', '']
-        pointsDisplay.AmbientColor = pointsDisplay.DiffuseColor = \
-            [0.45, 0.28, 0.12]
-        # About the spacing of the points when seeded (2 per cell)
-        pointsDisplay.PointSize = max(2.0, 0.5*ppm*dx)
+        # The soil as a body, not as its points: where its solid fraction
+        # is half the largest or more (soilFraction, the nodal fraction the
+        # solver writes, interpolated to the mesh's points and clipped: a
+        # smooth outline), coloured by the points' accumulated
+        # plastic strain (a Gaussian kernel of 1.5 cells over the points).
+        # Drawn as points the soil showed stripes: arcs of points with
+        # empty strips between them, where shearing thinned the rows; the
+        # cells there all hold points (1 of 745 cells of the body empty at
+        # 6 s, 3 to 5 points in most; the README's "Stripes"): the
+        # rendering, not a fracture
+        soilMesh = pv.ExtractBlock(Input=reader,
+                                   Selectors=['/Root/internalMesh'])
+        if not flat:
+            soilMesh = pv.Slice(Input=soilMesh)
+            soilMesh.SliceType = 'Plane'
+            soilMesh.SliceType.Origin = centre
+            soilMesh.SliceType.Normal = [0.0, 0.0, 1.0]
+        body = pv.Clip(Input=pv.CellDatatoPointData(Input=soilMesh))
+        body.ClipType = 'Scalar'
+        body.Scalars = ['POINTS', 'soilFraction']
+        body.Value = 0.5*phiMax if phiMax > 0 else 0.3
+        body.Invert = 0
+        cloudPoints = pv.MergeBlocks(Input=pv.ExtractBlock(
+            Input=reader, Selectors=['/Root/' + cloud]))
+        # (Input: the points that carry the data; Source: where it goes)
+        strain = pv.PointDatasetInterpolator(Input=cloudPoints,
+                                             Source=pv.MergeBlocks(Input=body))
+        strain.Kernel = 'GaussianKernel'
+        strain.Kernel.Radius = 1.5*dx
+        strain.NullPointsStrategy = 'Closest Point'
+        bodyDisplay = pv.Show(strain, view)
+        bodyDisplay.Representation = 'Surface'
+        pv.ColorBy(bodyDisplay, ('POINTS', 'plasticStrain'))
+        strainLut = pv.GetColorTransferFunction('plasticStrain')
+        strainLut.ApplyPreset('Inferno (matplotlib)', True)
+        strainLut.RescaleTransferFunction(0.0, args.strainMax)
+        strainLut.AutomaticRescaleRangeMode = 'Never'
+        bodyDisplay.SetScalarBarVisibility(view, True)
+        strainBar = pv.GetScalarBar(strainLut, view)
+        strainBar.Title = 'soil plastic strain'
+        strainBar.ComponentTitle = ''
+        strainBar.TitleColor = black
+        strainBar.LabelColor = black
+        strainBar.RangeLabelFormat = '%-.3g'
+        strainBar.Orientation = 'Horizontal'
+        strainBar.WindowLocation = 'Any Location'
+        strainBar.Position = [0.55, 0.74]
+        strainBar.ScalarBarLength = 0.3
         # In front of the water (the camera looks along -z)
-        pointsDisplay.Position = [0.0, 0.0, 1.01*size[2] + 0.01]
+        bodyDisplay.Position = [0.0, 0.0, 1.01*size[2] + 0.01]
+        # Where no soil fraction was written (the start, seeded by
+        # setMaterialPoints): the points, in the same colours, at about
+        # their spacing when seeded
+        pointsDisplay = pv.Show(cloudPoints, view)
+        pointsDisplay.Representation = 'Points'
+        pv.ColorBy(pointsDisplay, ('POINTS', 'plasticStrain'))
+        pointsDisplay.PointSize = max(2.0, 0.5*ppm*dx)
+        pointsDisplay.Position = bodyDisplay.Position
+        pointsDisplay.Visibility = 0
+        # (ColorBy rescales the map to the data: the range set again)
+        strainLut.AutomaticRescaleRangeMode = 'Never'
+        strainLut.RescaleTransferFunction(0.0, args.strainMax)
 
     text = pv.Text()
     textDisplay = pv.Show(text, view)
@@ -250,6 +309,12 @@ def main(argv):
     panels = []
     for t in chosen:
         view.ViewTime = t
+        if strainBar is not None:
+            mesh = fetchBlocks(reader, t).get('/internalMesh')
+            written = mesh is not None and \
+                mesh.GetCellData().GetArray('soilFraction') is not None
+            bodyDisplay.Visibility = 1 if written else 0
+            pointsDisplay.Visibility = 0 if written else 1
         text.Text = 'soil column collapse: water speed and soil, t = %g s' % t
         pv.Render(view)
         name = '%s_t%s.png' % (stem, timeName(t))
