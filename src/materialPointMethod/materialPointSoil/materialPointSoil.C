@@ -441,17 +441,27 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
             << "setMaterialPointsDict)" << exit(FatalError);
     }
     checkAgainstWriter();
+    // (the files these come from, named: a damaged cloud)
+    const fileName cloudDir
+    (
+        mesh_.time().timePath()/"lagrangian"/materialPoints::cloudName
+    );
     forAll(points_.material, p)
     {
         if (points_.material[p] < 0 || points_.material[p] >= materials_.size())
         {
             FatalErrorInFunction
                 << "Material point " << p << " has material index "
-                << points_.material[p] << " but soilProperties defines "
+                << points_.material[p] << " (" << cloudDir/"material"
+                << ") but soilProperties defines "
                 << materials_.size() << " materials " << materialNames_
                 << exit(FatalError);
         }
-        shape_->checkHalfLength(points_.halfLength[p].x());
+        shape_->checkHalfLength
+        (
+            points_.halfLength[p].x(),
+            cloudDir/"halfLength" + ", point " + Foam::name(p)
+        );
     }
 
     Info<< "Material point soil" << nl

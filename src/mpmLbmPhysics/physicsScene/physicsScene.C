@@ -250,11 +250,13 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
     // The state read as written (a processor's missing cloud, say)
     {
         restartManifest::stateTable state;
+        restartManifest::stateSources sources;
         forAll(effects_, i)
         {
             effects_[i].restartState(state);
+            effects_[i].restartStateSources(sources);
         }
-        restartManifest::checkState(runTime, state);
+        restartManifest::checkState(runTime, state, sources);
     }
     effectTime_.setSize(effects_.size(), 0);
 

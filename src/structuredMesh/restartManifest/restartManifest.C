@@ -638,7 +638,8 @@ void Foam::restartManifest::checkFiles(const Time& runTime)
 void Foam::restartManifest::checkState
 (
     const Time& runTime,
-    const stateTable& localState
+    const stateTable& localState,
+    const stateSources& sources
 )
 {
     const fileName path = runTime.timePath()/"uniform"/manifestName;
@@ -740,6 +741,26 @@ void Foam::restartManifest::checkState
             OStringStream os;
             os.precision(17);
             os  << key << ": read " << value << ", written " << written;
+            if (sources.found(key) && sources[key].size())
+            {
+                // (the files it was read from, as the case names them)
+                const fileName dir
+                (
+                    Pstream::parRun()
+                  ? fileName
+                    (
+                        "processor" + Foam::name(Pstream::myProcNo())
+                       /runTime.timeName()
+                    )
+                  : fileName(runTime.timeName())
+                );
+                os  << " (read from";
+                for (const word& f : sources[key])
+                {
+                    os  << " " << (dir/f).c_str();
+                }
+                os  << ")";
+            }
             problems.append(os.str());
         }
     }

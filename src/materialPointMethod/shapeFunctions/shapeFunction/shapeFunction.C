@@ -75,13 +75,19 @@ Foam::autoPtr<Foam::shapeFunction> Foam::shapeFunction::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::shapeFunction::checkHalfLength(const scalar halfLength) const
+void Foam::shapeFunction::checkHalfLength
+(
+    const scalar halfLength,
+    const string& where
+) const
 {
     if (!(halfLength >= 0) || halfLength > maxHalfLength())
     {
         FatalErrorInFunction
             << "Shape function " << type() << ": particle half-size "
-            << halfLength << " (lattice units, i.e. in cells) is outside"
+            << halfLength << (where.empty() ? "" : " (") << where.c_str()
+            << (where.empty() ? "" : ")")
+            << " (lattice units, i.e. in cells) is outside"
             << " [0, " << maxHalfLength() << "]. With GIMP a particle may"
             << " not be larger than a cell: use at least 1 point per cell"
             << " and direction." << exit(FatalError);

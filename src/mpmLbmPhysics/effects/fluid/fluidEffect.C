@@ -109,6 +109,15 @@ void Foam::physicsEffects::fluid::restartState
 }
 
 
+void Foam::physicsEffects::fluid::restartStateSources
+(
+    restartManifest::stateSources& sources
+) const
+{
+    sources.set("waterLatticeMass", lbm_.populationFiles());
+}
+
+
 Foam::wordList Foam::physicsEffects::fluid::stateFiles() const
 {
     return lbm_.populationFiles();

@@ -243,6 +243,15 @@ void Foam::physicsEffects::freeSurface::restartState
 }
 
 
+void Foam::physicsEffects::freeSurface::restartStateSources
+(
+    restartManifest::stateSources& sources
+) const
+{
+    sources.set("interfaceNodes", wordList({"lbmFreeSurfaceType"}));
+}
+
+
 Foam::scalar Foam::physicsEffects::freeSurface::memoryBytes() const
 {
     return returnReduce

@@ -93,6 +93,20 @@ void Foam::physicsEffects::soil::restartState
 }
 
 
+void Foam::physicsEffects::soil::restartStateSources
+(
+    restartManifest::stateSources& sources
+) const
+{
+    const fileName cloud("lagrangian"/materialPoints::cloudName);
+    sources.set
+    (
+        "soilPoints", wordList({cloud/"coordinates", cloud/"positions"})
+    );
+    sources.set("soilMass", wordList({cloud/"mass"}));
+}
+
+
 Foam::wordList Foam::physicsEffects::soil::stateFiles() const
 {
     // (a processor without points writes no cloud)
