@@ -113,6 +113,43 @@ def openCase(case):
     return reader
 
 
+def colourBy(pv, display, view, association, field, presets, lo, hi,
+             title, orientation, position, length):
+    """Colour a display by a field with a fixed range and its bar."""
+    black = [0.0, 0.0, 0.0]
+    pv.ColorBy(display, (association,) + tuple(field))
+    lut = pv.GetColorTransferFunction(field[0])
+    for preset in presets:
+        try:
+            lut.ApplyPreset(preset, True)
+            break
+        except Exception:
+            continue
+    lut.RescaleTransferFunction(lo, hi)
+    lut.AutomaticRescaleRangeMode = 'Never'
+    display.SetScalarBarVisibility(view, True)
+    bar = pv.GetScalarBar(lut, view)
+    bar.Title = title
+    bar.ComponentTitle = ''
+    bar.TitleColor = black
+    bar.LabelColor = black
+    bar.RangeLabelFormat = '%-.3g'
+    bar.Orientation = orientation
+    bar.WindowLocation = 'Any Location'
+    bar.Position = position
+    bar.ScalarBarLength = length
+    return lut, bar
+
+
+def midSlice(pv, source, centre):
+    """The plane z = centre's through a 3D case."""
+    cut = pv.Slice(Input=source)
+    cut.SliceType = 'Plane'
+    cut.SliceType.Origin = centre
+    cut.SliceType.Normal = [0.0, 0.0, 1.0]
+    return cut
+
+
 def main(argv):
     args = parseArgs(argv)
     import paraview.simple as pv
@@ -187,10 +224,7 @@ def main(argv):
 
     water = pv.ExtractBlock(Input=reader, Selectors=['/Root/internalMesh'])
     if not flat:
-        water = pv.Slice(Input=water)
-        water.SliceType = 'Plane'
-        water.SliceType.Origin = centre
-        water.SliceType.Normal = [0.0, 0.0, 1.0]
+        water = midSlice(pv, water, centre)
     if freeSurface:
         water = pv.Threshold(Input=water)
         water.Scalars = ['CELLS', 'alpha.water']
@@ -202,25 +236,9 @@ def main(argv):
             water.ThresholdRange = [0.5, 2.0]
     waterDisplay = pv.Show(water, view)
     waterDisplay.Representation = 'Surface'
-    pv.ColorBy(waterDisplay, ('CELLS', 'U', 'Magnitude'))
-    lut = pv.GetColorTransferFunction('U')
-    try:
-        lut.ApplyPreset('Turbo', True)
-    except Exception:
-        lut.ApplyPreset('Jet', True)
-    lut.RescaleTransferFunction(0.0, uMax)
-    lut.AutomaticRescaleRangeMode = 'Never'
-    waterDisplay.SetScalarBarVisibility(view, True)
-    bar = pv.GetScalarBar(lut, view)
-    bar.Title = 'water |U| [m/s]'
-    bar.ComponentTitle = ''
-    bar.TitleColor = black
-    bar.LabelColor = black
-    bar.RangeLabelFormat = '%-.3g'
-    bar.Orientation = 'Vertical'
-    bar.WindowLocation = 'Any Location'
-    bar.Position = [0.89, 0.15]
-    bar.ScalarBarLength = 0.7
+    colourBy(pv, waterDisplay, view, 'CELLS', ('U', 'Magnitude'),
+             ('Turbo', 'Jet'), 0.0, uMax, 'water |U| [m/s]', 'Vertical',
+             [0.89, 0.15], 0.7)
 
     strainBar = None
     if cloud in reader.MeshRegions:
@@ -237,10 +255,7 @@ def main(argv):
         soilMesh = pv.ExtractBlock(Input=reader,
                                    Selectors=['/Root/internalMesh'])
         if not flat:
-            soilMesh = pv.Slice(Input=soilMesh)
-            soilMesh.SliceType = 'Plane'
-            soilMesh.SliceType.Origin = centre
-            soilMesh.SliceType.Normal = [0.0, 0.0, 1.0]
+            soilMesh = midSlice(pv, soilMesh, centre)
         body = pv.Clip(Input=pv.CellDatatoPointData(Input=soilMesh))
         body.ClipType = 'Scalar'
         body.Scalars = ['POINTS', 'soilFraction']
@@ -256,22 +271,10 @@ def main(argv):
         strain.NullPointsStrategy = 'Closest Point'
         bodyDisplay = pv.Show(strain, view)
         bodyDisplay.Representation = 'Surface'
-        pv.ColorBy(bodyDisplay, ('POINTS', 'plasticStrain'))
-        strainLut = pv.GetColorTransferFunction('plasticStrain')
-        strainLut.ApplyPreset('Inferno (matplotlib)', True)
-        strainLut.RescaleTransferFunction(0.0, args.strainMax)
-        strainLut.AutomaticRescaleRangeMode = 'Never'
-        bodyDisplay.SetScalarBarVisibility(view, True)
-        strainBar = pv.GetScalarBar(strainLut, view)
-        strainBar.Title = 'soil plastic strain'
-        strainBar.ComponentTitle = ''
-        strainBar.TitleColor = black
-        strainBar.LabelColor = black
-        strainBar.RangeLabelFormat = '%-.3g'
-        strainBar.Orientation = 'Horizontal'
-        strainBar.WindowLocation = 'Any Location'
-        strainBar.Position = [0.55, 0.74]
-        strainBar.ScalarBarLength = 0.3
+        strainLut, strainBar = colourBy(
+            pv, bodyDisplay, view, 'POINTS', ('plasticStrain',),
+            ('Inferno (matplotlib)',), 0.0, args.strainMax,
+            'soil plastic strain', 'Horizontal', [0.55, 0.74], 0.3)
         # In front of the water (the camera looks along -z)
         bodyDisplay.Position = [0.0, 0.0, 1.01*size[2] + 0.01]
         # Where no soil fraction was written (the start, seeded by
