@@ -713,8 +713,6 @@ void Foam::latticeBoltzmannFluid::streamedState
 
 void Foam::latticeBoltzmannFluid::step()
 {
-    const label nBox = lattice_.nBox();
-
     prepareStream();
     scalarList& f = current();
 
@@ -731,8 +729,6 @@ void Foam::latticeBoltzmannFluid::step()
     lbmKernelArgs a;
     a.fOld = f.cdata();
     a.fNew = inPlace_ ? f.data() : next().data();
-    a.nBox = nBox;
-    a.offset = offset_.cdata();
     a.srcBase = srcBase.cdata();
     a.dstBase = dstBase.cdata();
     a.oldBase = oldBase.cdata();
@@ -812,7 +808,7 @@ void Foam::latticeBoltzmannFluid::startInPlace()
     const label nBox = lattice_.nBox();
     const labelList& opp = velocitySet_->opp();
     const label block = layout_.block();
-    const label pad = (block - nBox)/2;
+    const label pad = layout_.pad();
     scalarList& f = current();
     for (label q = 0; q < Q; ++q)
     {

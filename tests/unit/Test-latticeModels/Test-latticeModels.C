@@ -201,7 +201,6 @@ static scalarList collideOne
 {
     const label Q = vs.Q();
     scalarList fNew(Q, 0.0);
-    labelList offset(Q, 0);
     label runs[1][2] = {{0, 1}};
     scalarList Fx(1, F.x()), Fy(1, F.y()), Fz(1, F.z());
     const scalarList relaxK(1, kappa), relaxS(1, s);
@@ -211,8 +210,6 @@ static scalarList collideOne
     lbmKernelArgs a;
     a.fOld = f.cdata();
     a.fNew = fNew.data();
-    a.nBox = 1;
-    a.offset = offset.cdata();
     // (one node, natural layout: direction q at q)
     const labelList base(identity(Q));
     a.srcBase = base.cdata();

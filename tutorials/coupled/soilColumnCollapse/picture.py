@@ -113,10 +113,19 @@ def openCase(case):
     return reader
 
 
+def styleBar(bar, title, position, orientation='Vertical', length=0.6):
+    """A colour bar's look: black text, three significant digits."""
+    for key, value in dict(
+            Title=title, ComponentTitle='', TitleColor=[0.0, 0.0, 0.0],
+            LabelColor=[0.0, 0.0, 0.0], RangeLabelFormat='%-.3g',
+            Orientation=orientation, WindowLocation='Any Location',
+            Position=position, ScalarBarLength=length).items():
+        setattr(bar, key, value)
+
+
 def colourBy(pv, display, view, association, field, presets, lo, hi,
              title, orientation, position, length):
     """Colour a display by a field with a fixed range and its bar."""
-    black = [0.0, 0.0, 0.0]
     pv.ColorBy(display, (association,) + tuple(field))
     lut = pv.GetColorTransferFunction(field[0])
     for preset in presets:
@@ -129,16 +138,17 @@ def colourBy(pv, display, view, association, field, presets, lo, hi,
     lut.AutomaticRescaleRangeMode = 'Never'
     display.SetScalarBarVisibility(view, True)
     bar = pv.GetScalarBar(lut, view)
-    bar.Title = title
-    bar.ComponentTitle = ''
-    bar.TitleColor = black
-    bar.LabelColor = black
-    bar.RangeLabelFormat = '%-.3g'
-    bar.Orientation = orientation
-    bar.WindowLocation = 'Any Location'
-    bar.Position = position
-    bar.ScalarBarLength = length
+    styleBar(bar, title, position, orientation, length)
     return lut, bar
+
+
+def savePanel(pv, view, stem, t, width, height, prog):
+    """Render the view at time t into <stem>_t<t>.png; its name."""
+    pv.Render(view)
+    name = '%s_t%s.png' % (stem, timeName(t))
+    pv.SaveScreenshot(name, view, ImageResolution=[width, height])
+    print('%s: %s' % (prog, name))
+    return name
 
 
 def midSlice(pv, source, centre):
@@ -319,11 +329,8 @@ def main(argv):
             bodyDisplay.Visibility = 1 if written else 0
             pointsDisplay.Visibility = 0 if written else 1
         text.Text = 'soil column collapse: water speed and soil, t = %g s' % t
-        pv.Render(view)
-        name = '%s_t%s.png' % (stem, timeName(t))
-        pv.SaveScreenshot(name, view, ImageResolution=[width, height])
-        panels.append(name)
-        print('picture.py: %s' % name)
+        panels.append(savePanel(pv, view, stem, t, width, height,
+                                'picture.py'))
     pv.Delete(view)
 
     stackPanels(panels, args.png)

@@ -34,8 +34,8 @@ import sys
 # the stacking of the panels: as the pseudo-2D picture does them
 sys.dont_write_bytecode = True     # (no __pycache__ in the case folder)
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from picture import (fetchBlocks, openCase, speedRange,  # noqa: E402
-                     stackPanels, timeName)
+from picture import (fetchBlocks, openCase, savePanel,  # noqa: E402
+                     speedRange, stackPanels, styleBar)
 
 
 def parseArgs(argv):
@@ -83,15 +83,6 @@ def soilPolyData(x, d):
     array.SetName('displacement')
     poly.GetPointData().AddArray(array)
     return poly
-
-
-def styleBar(bar, title, position):
-    for key, value in dict(
-            Title=title, ComponentTitle='', TitleColor=[0.0, 0.0, 0.0],
-            LabelColor=[0.0, 0.0, 0.0], RangeLabelFormat='%-.3g',
-            Orientation='Vertical', WindowLocation='Any Location',
-            Position=position, ScalarBarLength=0.6).items():
-        setattr(bar, key, value)
 
 
 def main(argv):
@@ -283,11 +274,8 @@ def main(argv):
                 producer.UpdatePipeline()
         text.Text = 'soil column collapse, 3D: water speed and soil ' \
             'displacement, t = %g s' % t
-        pv.Render(view)
-        name = '%s_t%s.png' % (stem, timeName(t))
-        pv.SaveScreenshot(name, view, ImageResolution=[width, height])
-        panels.append(name)
-        print('picture3d.py: %s' % name)
+        panels.append(savePanel(pv, view, stem, t, width, height,
+                                'picture3d.py'))
     pv.Delete(view)
 
     stackPanels(panels, args.png)
