@@ -184,5 +184,34 @@ def read_list(path):
     return data if ncomp == 1 else data.reshape(n, ncomp)
 
 
-def read_cloud(case, time, field, cloud='materialPoints'):
-    return read_list(os.path.join(case, str(time), 'lagrangian', cloud, field))
+_ORDER_CACHE = {}
+
+
+def _identity_order(cloud_dir):
+    """The permutation that puts the points of a written cloud in the order
+    of their identity (origProcId, origId), or None without those files."""
+    ids_path = os.path.join(cloud_dir, 'origId')
+    if not os.path.isfile(ids_path):
+        return None
+    key = (cloud_dir, os.path.getmtime(ids_path))
+    if key not in _ORDER_CACHE:
+        ids = read_list(ids_path)
+        procs_path = os.path.join(cloud_dir, 'origProcId')
+        procs = (read_list(procs_path) if os.path.isfile(procs_path)
+                 else np.zeros_like(ids))
+        _ORDER_CACHE[key] = np.lexsort((ids, procs))
+    return _ORDER_CACHE[key]
+
+
+def read_cloud(case, time, field, cloud='materialPoints', by_identity=True):
+    """A field of a written cloud. By default in the order of the points'
+    identity (origProcId, origId), the same at every time: the solver
+    keeps its points sorted by the cell that holds them, so their order in
+    the files changes as they move (by_identity=False: the files' order)."""
+    cloud_dir = os.path.join(case, str(time), 'lagrangian', cloud)
+    data = read_list(os.path.join(cloud_dir, field))
+    if by_identity:
+        order = _identity_order(cloud_dir)
+        if order is not None and len(order) == len(data):
+            data = data[order]
+    return data

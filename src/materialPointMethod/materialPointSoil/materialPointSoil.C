@@ -312,6 +312,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     gravityRamp_(dict_.getOrDefault<scalar>("gravityRamp", 0)),
     localDamping_(dict_.getOrDefault<scalar>("localDamping", 0)),
     time_(mesh_.time().value()),
+    haloRoutesSet_(false),
     addedModulus_(0),
     maxSpeed_(GREAT),
     periodic_
@@ -319,7 +320,6 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
         lattice.periodic()[0] || lattice.periodic()[1] || lattice.periodic()[2]
     ),
     hasPointForces_(false),
-    haloRoutesSet_(false),
     gridExchange_(nullptr),
     nClamped_(0),
     firstClamped_(-1),
@@ -569,6 +569,7 @@ void Foam::materialPointSoil::advance(const scalar deltaT)
     }
     nSubSteps_ = max(label(std::ceil(deltaT/dtStable - 1e-9)), label(1));
     subDt_ = deltaT/nSubSteps_;
+    sortPoints();
     if (gridExchange_)
     {
         gridExchange_->begin(deltaT);

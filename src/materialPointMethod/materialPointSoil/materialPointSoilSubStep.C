@@ -65,6 +65,60 @@ void Foam::materialPointSoil::updateGridBox()
 }
 
 
+void Foam::materialPointSoil::sortPoints()
+{
+    // The points that share a cell, and those of the next cells, share
+    // most of their support's nodes: in the lattice's node order (x
+    // fastest) the transfers find the node records and velocities they
+    // need in the cache. Points are made in that order, but a flow
+    // scatters them: at 5.5 s of the paper's 3D case the soil's sub-step
+    // had slowed by 14% with the same profile of work. A stable counting
+    // sort by cell, once per step (a point moves a fraction of a cell per
+    // step): the same state gives the same order, so a restart repeats
+    // the run exactly.
+    const label n = points_.size();
+    if (n < 2)
+    {
+        return;
+    }
+    labelList key(n);
+    label lo = labelMax, hi = 0;
+    bool sorted = true;
+    for (label p = 0; p < n; ++p)
+    {
+        // (a point outside this processor's box is about to be refused by
+        // the migration check: first in the order meanwhile)
+        key[p] = max(walls_->cellNodeOf(points_.x[p]), label(0));
+        lo = min(lo, key[p]);
+        hi = max(hi, key[p]);
+        sorted = sorted && (p == 0 || key[p] >= key[p - 1]);
+    }
+    if (sorted)
+    {
+        return;
+    }
+    labelList start(hi - lo + 2, Zero);
+    for (const label k : key)
+    {
+        ++start[k - lo + 1];
+    }
+    for (label i = 1; i < start.size(); ++i)
+    {
+        start[i] += start[i - 1];
+    }
+    labelList order(n);
+    for (label p = 0; p < n; ++p)
+    {
+        order[start[key[p] - lo]++] = p;
+    }
+    points_.reorder
+    (
+        order,
+        hasPointForces_ && pointForce_.size() ? &pointForce_ : nullptr
+    );
+}
+
+
 const Foam::haloExchange::routes& Foam::materialPointSoil::haloRoutes() const
 {
     if (!haloRoutesSet_ || haloBox_ != pointsBox_)

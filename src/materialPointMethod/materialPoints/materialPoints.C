@@ -221,6 +221,42 @@ void Foam::materialPoints::remove
 }
 
 
+void Foam::materialPoints::reorder
+(
+    const labelUList& order,
+    List<vector>* extra
+)
+{
+    auto permute = [&](auto& values)
+    {
+        typedef typename std::decay<decltype(values[0])>::type Type;
+        List<Type> sorted(values.size());
+        forAll(order, k)
+        {
+            sorted[k] = values[order[k]];
+        }
+        values.transfer(sorted);
+    };
+    permute(x); permute(v); permute(m); permute(V); permute(V0); permute(F);
+    permute(sigma); permute(plasticStrain); permute(C); permute(material);
+    permute(halfLength); permute(porosity); permute(id);
+    if (carriesFines)
+    {
+        permute(fines);
+    }
+    if (extra)
+    {
+        if (extra->size() != order.size())
+        {
+            FatalErrorInFunction
+                << "A per-point list of " << extra->size() << " values for "
+                << order.size() << " points" << abort(FatalError);
+        }
+        permute(*extra);
+    }
+}
+
+
 void Foam::materialPoints::migrate
 (
     const labelUList& leaving,

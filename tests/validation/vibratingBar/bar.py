@@ -25,7 +25,8 @@ v0, L = float(sys.argv[3]), float(sys.argv[4])
 cloud = os.path.join(case, '0', 'lagrangian', 'materialPoints')
 
 if mode == 'set':
-    x = foamio.read_cloud(case, '0', 'x')
+    # (in the file's order: U is written back in it)
+    x = foamio.read_cloud(case, '0', 'x', by_identity=False)
     v = np.zeros_like(x)
     v[:, 0] = v0 * np.sin(np.pi * x[:, 0] / (2 * L))
     with open(os.path.join(cloud, 'U'), 'w') as f:
