@@ -26,8 +26,9 @@
 #     (Roache 1994, J. Fluids Eng. 116; a safety factor of 1.25 for a three-
 #     grid study). Orders that the differences do not allow (of different
 #     signs) are said to be so, not computed. The cell sizes whose run-out
-#     is within 5% of the best estimate (the extrapolated value when the
-#     order is trustworthy, 0.5 to 4, else the finest run) are listed.
+#     is within 5% of the best estimate are listed: the extrapolated value
+#     of the finest three grids when their order is trustworthy (0.5 to
+#     4), else the finest run.
 #
 #     Written: FILE.csv (one row per run and time: dx, soilCFL, time,
 #     run-out, front speed, wall time) and a picture FILE.png: run-out
@@ -46,6 +47,7 @@ import numpy as np
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt   # noqa: E402
+from matplotlib.ticker import FixedLocator, FormatStrFormatter, NullLocator  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.environ.get('MPMLBM_PROJECT_DIR', '../../..'),
                                 'tests', 'lib'))
@@ -155,18 +157,22 @@ def report(rows, times):
             if p is None:
                 print('- dx %g, %g, %g: differences %+.3f, %+.3f m change '
                       'sign: no order' % (d3, d2, d1, r2 - r3, r1 - r2))
+                best = None
                 continue
             if ext is None:
                 print('- dx %g, %g, %g: differences %+.3f, %+.3f m do not '
                       'shrink (order %.2f)' % (d3, d2, d1, r2 - r3, r1 - r2, p))
+                best = None
                 continue
             trusted = 0.5 <= p <= 4
             print('- dx %g, %g, %g: differences %+.3f, %+.3f m, observed '
                   'order %.2f, Richardson value %.2f m, GCI %.1f%%%s'
                   % (d3, d2, d1, r2 - r3, r1 - r2, p, ext, 100*gci,
                      '' if trusted else ' (order outside 0.5-4: not used)'))
-            if trusted:
-                best = (ext, 'Richardson value from dx %g-%g-%g' % (d3, d2, d1))
+            # (the finest three grids decide: an untrusted order there
+            # leaves the finest run as the estimate)
+            best = ((ext, 'Richardson value from dx %g-%g-%g' % (d3, d2, d1))
+                    if trusted else None)
         if best is None and series:
             best = (series[-1][1], 'the finest run, dx %g m' % series[-1][0])
         if best:
@@ -183,6 +189,16 @@ def report(rows, times):
                     '%g: %.2f m' % p for p in pts)))
         print()
     return estimates
+
+
+def log2_axis(a, values, label):
+    """A log2 x axis from coarse to fine, ticked at the values themselves."""
+    a.set_xscale('log', base=2)
+    a.xaxis.set_major_locator(FixedLocator(sorted(values)))
+    a.xaxis.set_major_formatter(FormatStrFormatter('%g'))
+    a.xaxis.set_minor_locator(NullLocator())
+    a.set_xlim(max(values)*1.3, min(values)/1.3)
+    a.set_xlabel(label)
 
 
 def picture(rows, times, estimates, png):
@@ -214,9 +230,7 @@ def picture(rows, times, estimates, png):
             a.axhline(estimates[t], color=line.get_color(), ls='--', lw=0.8)
             a.axhspan(0.95*estimates[t], 1.05*estimates[t],
                       color=line.get_color(), alpha=0.12)
-    a.set_xscale('log', base=2)
-    a.invert_xaxis()
-    a.set_xlabel('dx [m]')
+    log2_axis(a, dxs, 'dx [m]')
     a.set_ylabel('run-out [m]')
     a.set_title('run-out against dx: best estimate (dashed), +-5% (band)',
                 fontsize=10)
@@ -230,9 +244,7 @@ def picture(rows, times, estimates, png):
         if pts:
             a.plot([p[0] for p in pts], [p[1] for p in pts], marker='o',
                    label='at %g s' % t)
-    a.set_xscale('log', base=2)
-    a.invert_xaxis()
-    a.set_xlabel('dx [m]')
+    log2_axis(a, dxs, 'dx [m]')
     a.set_ylabel('front speed [m/s]')
     a.set_title('front speed over the last written interval', fontsize=10)
     a.legend(fontsize=8)
@@ -246,9 +258,7 @@ def picture(rows, times, estimates, png):
             if len(pts) > 1:
                 a.plot([p[0] for p in pts], [p[1] for p in pts], marker='o',
                        label='dx %g m, %g s' % (dx, t))
-    a.set_xscale('log', base=2)
-    a.invert_xaxis()
-    a.set_xlabel('soilCFL')
+    log2_axis(a, cfls, 'soilCFL')
     a.set_ylabel('run-out [m]')
     a.set_title('run-out against the soil\'s CFL number', fontsize=10)
     if a.lines:
