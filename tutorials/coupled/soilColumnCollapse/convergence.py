@@ -218,15 +218,21 @@ def picture(rows, times, estimates, png):
     a.legend(fontsize=8)
     a.grid(alpha=0.3)
 
-    a = ax[0][1]
-    for t in times:
+    def against_dx(a, key, t):
+        """The line of rows[key] at time t against dx (default soilCFL),
+        or None without points."""
         pts = [(dx, at(rows, dx, DEFAULT_CFL, t)) for dx in dxs]
-        pts = [(dx, r['runout']) for dx, r in pts if r]
+        pts = [(dx, r[key]) for dx, r in pts if r]
         if not pts:
-            continue
+            return None
         line, = a.plot([p[0] for p in pts], [p[1] for p in pts], marker='o',
                        label='%g s' % t)
-        if t in estimates:
+        return line
+
+    a = ax[0][1]
+    for t in times:
+        line = against_dx(a, 'runout', t)
+        if line is not None and t in estimates:
             a.axhline(estimates[t], color=line.get_color(), ls='--', lw=0.8)
             a.axhspan(0.95*estimates[t], 1.05*estimates[t],
                       color=line.get_color(), alpha=0.12)
@@ -239,11 +245,7 @@ def picture(rows, times, estimates, png):
 
     a = ax[1][0]
     for t in times:
-        pts = [(dx, at(rows, dx, DEFAULT_CFL, t)) for dx in dxs]
-        pts = [(dx, r['speed']) for dx, r in pts if r]
-        if pts:
-            a.plot([p[0] for p in pts], [p[1] for p in pts], marker='o',
-                   label='at %g s' % t)
+        against_dx(a, 'speed', t)
     log2_axis(a, dxs, 'dx [m]')
     a.set_ylabel('front speed [m/s]')
     a.set_title('front speed over the last written interval', fontsize=10)
