@@ -632,9 +632,12 @@ Foam::scalar Foam::materialPointSoil::memoryBytes() const
     // Per point the stored arrays only: the weights are evaluated where
     // they are used, the strain increments kept for one block of points.
     // Per box node: mass, momentum, force, velocity and old velocity, the
-    // particle-to-grid records (8 doubles) and the velocities padded to 4
-    // doubles (FLIP's old ones too)
-    const label nPadded = (transfer_ == transferType::FLIP ? 8 : 4);
+    // particle-to-grid records (8 doubles) and the padded velocities: 4
+    // doubles where a stress update reads them apart from G2P (USF, MUSL,
+    // or any transfer but FLIP), 8 for FLIP's velocity and change
+    const bool flip = (transfer_ == transferType::FLIP);
+    const label nPadded =
+        (flip ? 8 : 0) + (!flip || update_ != updateType::USL ? 4 : 0);
     return returnReduce
     (
         scalar(points_.size())*materialPoints::memoryPerPoint()
