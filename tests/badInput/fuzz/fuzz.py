@@ -273,9 +273,10 @@ def run_program(case, args, parallel, timeout, tag=''):
     return Result(program, rc, log, timed_out)
 
 
-# The project's programs: a crash of one of OpenFOAM's own utilities
-# (decomposePar with numberOfSubdomains 0, say) is reported apart
-OURS = (SOLVER, 'setMaterialPoints')
+# The project's programs, decomposePar among them (bin/decomposePar checks
+# the dictionary before OpenFOAM's runs): a crash of one of OpenFOAM's
+# other utilities is reported apart
+OURS = (SOLVER, 'setMaterialPoints', 'decomposePar')
 
 
 def verdict(result):
