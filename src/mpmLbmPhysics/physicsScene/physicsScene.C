@@ -198,6 +198,7 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
     names_(dict_.get<wordList>("effects")),
     writeTime_(0),
     fieldTime_(0),
+    fieldRefreshes_(0),
     progressInterval_(dict_.getOrDefault<scalar>("progressInterval", 10)),
     nSteps_(0),
     nStepsTotal_(0),
@@ -338,18 +339,84 @@ bool Foam::physicsScene::functionObjectsReadFields() const
     });
     forAll(objects, i)
     {
-        // (an object with time controls is wrapped in a timeControl)
-        const functionObject* fo = &objects[i];
-        if (isA<functionObjects::timeControl>(*fo))
+        // (an object with time controls is wrapped in a timeControl; one
+        // without executes and writes at every step)
+        const functionObject& fo = objects[i];
+        if (!isA<functionObjects::timeControl>(fo))
         {
-            fo = &refCast<const functionObjects::timeControl>(*fo).filter();
+            if (!ownTypes.found(fo.type()))
+            {
+                return true;
+            }
+            continue;
         }
-        if (!ownTypes.found(fo->type()))
+        const functionObjects::timeControl& controlled =
+            refCast<const functionObjects::timeControl>(fo);
+        if
+        (
+            !ownTypes.found(controlled.filter().type())
+         && (
+                controlFires(controlled.executeControl())
+             || controlFires(controlled.writeControl())
+            )
+         && withinTimeWindow(controlled.dict())
+        )
         {
             return true;
         }
     }
     return false;
+}
+
+
+bool Foam::physicsScene::controlFires(const Foam::timeControl& control) const
+{
+    // As Foam::timeControl::execute() decides (v1912), without changing its
+    // state: an object samples or writes the fields in its execute() or
+    // its write(), each under its own control
+    const scalar interval = control.interval();
+    switch (control.control())
+    {
+        case Foam::timeControl::ocNone:
+            return false;
+        case Foam::timeControl::ocTimeStep:
+        {
+            const label every = label(interval);
+            return every <= 1 || runTime_.timeIndex() % every == 0;
+        }
+        case Foam::timeControl::ocWriteTime:
+            // (called off the write times only)
+            return runTime_.writeTime();
+        case Foam::timeControl::ocRunTime:
+        case Foam::timeControl::ocAdjustableRunTime:
+        {
+            if (!(interval > 0))
+            {
+                return true;
+            }
+            // It fires when the index of its interval grows: from the
+            // previous step to this one
+            const scalar t0 = runTime_.startTime().value();
+            const scalar dt = runTime_.deltaTValue();
+            const scalar t = runTime_.value();
+            return
+                label((t - t0 + 0.5*dt)/interval)
+              > label((t - dt - t0 + 0.5*dt)/interval);
+        }
+        default:
+            // (always, cpuTime, clockTime, onEnd: as it may fire)
+            return true;
+    }
+}
+
+
+bool Foam::physicsScene::withinTimeWindow(const dictionary& dict) const
+{
+    // functionObjects::timeControl's timeStart and timeEnd
+    const scalar t = runTime_.value();
+    return
+        t >= dict.getOrDefault<scalar>("timeStart", -GREAT)
+     && t <= dict.getOrDefault<scalar>("timeEnd", GREAT);
 }
 
 
@@ -373,6 +440,7 @@ void Foam::physicsScene::write()
             const clockValue t0(clockValue::now());
             updateFields();
             fieldTime_ += t0.elapsed();
+            ++fieldRefreshes_;
         }
         return;
     }
@@ -456,7 +524,9 @@ void Foam::physicsScene::summary() const
     if (fieldTime_ > 0)
     {
         Info<< "    fields for function objects: " << fieldTime_ << " s ("
-            << label(100*fieldTime_/max(wall, VSMALL) + 0.5) << "%)" << nl;
+            << label(100*fieldTime_/max(wall, VSMALL) + 0.5) << "%, "
+            << fieldRefreshes_ << " refreshes off the write times, at the"
+            << " steps their execute or write control fires)" << nl;
     }
     // The rest of the wall time: the function objects' own work, the
     // start-up, the progress reports
