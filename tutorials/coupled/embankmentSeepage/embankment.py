@@ -22,11 +22,18 @@
 #       slope's angle:
 #           a = sqrt(d^2 + H^2) - sqrt(d^2 - H^2 cot^2 beta),
 #           q/k = a sin^2 beta,  the exit point a sin(beta) above the toe;
-#     - the exit point: the highest wet node of the downstream slope.
+#     - the exit point: the highest wet node of the downstream slope;
+#     - the function objects of system/controlDict: the flow meters of the
+#       reservoir's and the tailwater's floors (q/k in and out), and the
+#       piezometers 1 cm above the floor: their head p/(rho g) + y against
+#       the phreatic line's height above them (Dupuit's assumption:
+#       vertical equipotentials, the head is the height of the water).
 #     --png: the water (alpha.water) with the phreatic line, the Darcy
-#     velocity in the embankment and q/k against time.
+#     velocity in the embankment, q/k against time (sections and meters),
+#     the piezometric heads against time.
 #------------------------------------------------------------------------------
 import os
+import re
 import sys
 import numpy as np
 
@@ -82,6 +89,48 @@ def read(case):
     return lat, ts, rows
 
 
+def series(case, name, file):
+    """Time and values of postProcessing/<name>/<start>/<file>, every start
+    in order (a restart continues in a new folder)"""
+    root = os.path.join(case, 'postProcessing', name)
+    rows = []
+    if os.path.isdir(root):
+        for start in sorted(os.listdir(root), key=float):
+            path = os.path.join(root, start, file)
+            if not os.path.exists(path):
+                continue
+            for line in open(path):
+                if line.startswith('#') or not line.strip():
+                    continue
+                rows.append([float(v) for v in re.findall(
+                    r'[-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?', line)])
+    return np.array(rows) if rows else np.zeros((0, 4))
+
+
+PIEZOMETER_Y = 0.01
+
+
+def meters(case, lat):
+    """The function objects' series: (t, q/k in, q/k out) of the floors'
+    flow meters and (t, head at each piezometer)"""
+    k = K * G / NU
+    depth = lat.dx            # (one cell thick)
+    inflow = series(case, 'reservoirMeter', 'surfaceFieldValue.dat')
+    outflow = series(case, 'tailwaterMeter', 'surfaceFieldValue.dat')
+    n = min(len(inflow), len(outflow))
+    flow = np.zeros((n, 3))
+    if n:
+        # (U.n on a floor: negative where the water enters)
+        flow[:, 0] = inflow[:n, 0]
+        flow[:, 1] = -inflow[:n, 1] / depth / k
+        flow[:, 2] = outflow[:n, 1] / depth / k
+    piezo = series(case, 'piezometers', 'p')
+    if len(piezo):
+        piezo = piezo.copy()
+        piezo[:, 1:] = piezo[:, 1:] / (RHO * G) + PIEZOMETER_Y
+    return flow, piezo
+
+
 def exit_height(lat, a):
     """The highest wet node of the embankment's downstream face."""
     x, y = lat.axis(0), lat.axis(1)
@@ -117,11 +166,23 @@ def main():
     print('embankment: q/k %.5f m, Casagrande %.5f m (%+.1f%%); q = %.4e m2/s '
           'for k = %.3g m/s' % (qMean, qC, 100 * (qMean / qC - 1),
                                qMean * K * G / NU, K * G / NU))
+    flow, piezo = meters(case, lat)
+    if len(flow):
+        print('embankment: flow meters at t %g s: q/k in (reservoir floor) '
+              '%.5f m, out (tailwater floor) %.5f m' % tuple(flow[-1]))
+    if len(piezo):
+        x = lat.axis(0)
+        for i, xs in enumerate(SECTIONS):
+            h = a[int(np.argmin(abs(x - xs))), :].sum() * lat.dx
+            print('embankment: piezometer x = %g m at t %g s: head %.4f m, '
+                  'the phreatic line %.4f m above the floor (%+.1f%%)'
+                  % (xs, piezo[-1, 0], piezo[-1, 1 + i], h,
+                     100 * (piezo[-1, 1 + i] / h - 1)))
     if png:
-        plot(case, lat, ts, rows, a, qC, png)
+        plot(case, lat, ts, rows, a, qC, png, flow, piezo)
 
 
-def plot(case, lat, ts, rows, a, qC, png):
+def plot(case, lat, ts, rows, a, qC, png, flow, piezo):
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
@@ -130,8 +191,8 @@ def plot(case, lat, ts, rows, a, qC, png):
     U = np.asarray(foamio.read(case, ts[-1], 'U'))
     Ux = lat.grid(U[:, 0])[:, :, 0]
     Uy = lat.grid(U[:, 1])[:, :, 0]
-    fig, (ax, bx) = plt.subplots(2, 1, figsize=(9, 7.2),
-                                 gridspec_kw={'height_ratios': [1.25, 1]})
+    fig, (ax, bx, cx) = plt.subplots(3, 1, figsize=(9, 10.2),
+                                     gridspec_kw={'height_ratios': [1.25, 1, 1]})
     edges_x = np.append(x - 0.5 * dx, x[-1] + 0.5 * dx)
     edges_y = np.append(y - 0.5 * dx, y[-1] + 0.5 * dx)
     from matplotlib.colors import LinearSegmentedColormap
@@ -164,13 +225,34 @@ def plot(case, lat, ts, rows, a, qC, png):
     q = np.array([r[1] for r in rows])
     for i, xs in enumerate(SECTIONS):
         bx.plot(t, q[:, i], 'o-', ms=3, label='section x = %g m' % xs)
+    if len(flow):
+        bx.plot(flow[:, 0], flow[:, 1], '-', color='tab:blue', lw=1,
+                label='flow meter: in through the reservoir\'s floor')
+        bx.plot(flow[:, 0], flow[:, 2], '-', color='tab:red', lw=1,
+                label='flow meter: out through the tailwater\'s floor')
     bx.axhline(qC, color='k', ls='--',
                label='Casagrande (1937) for the settled level: %.4f m' % qC)
     bx.set_xlabel('t [s]')
     bx.set_ylabel('q/k [m]')
+    bx.set_ylim(0, 2.5 * qC)
     bx.set_title('Discharge per unit width over the conductivity')
-    bx.legend(fontsize=8)
+    bx.legend(fontsize=7, ncol=2)
     bx.grid(alpha=0.3)
+    colours = ('tab:blue', 'tab:orange', 'tab:green')
+    for i, xs in enumerate(SECTIONS):
+        if len(piezo):
+            cx.plot(piezo[:, 0], piezo[:, 1 + i], '-', color=colours[i],
+                    label='piezometer x = %g m, y = %g m' % (xs, PIEZOMETER_Y))
+        h = a[int(np.argmin(abs(x - xs))), :].sum() * dx
+        cx.axhline(h, color=colours[i], ls='--', lw=0.8)
+    cx.plot([], [], 'k--', lw=0.8, label='the phreatic line\'s height there '
+            'at t = %s s (Dupuit)' % ts[-1])
+    cx.set_xlabel('t [s]')
+    cx.set_ylabel('head p/(rho g) + y [m]')
+    cx.set_ylim(0, HEIGHT)
+    cx.set_title('Piezometers 1 cm above the floor')
+    cx.legend(fontsize=7, loc='upper right')
+    cx.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(png, dpi=110)
 
