@@ -15,7 +15,7 @@
 #             [--cloud-field CLOUD:NAME:MIN:MAX ...] [--decomposed] \
 #             [--png FILE [--resolution WxH] [--colour-by NAME]
 #              [--cloud-colour-by NAME[:COMPONENT]:MIN:MAX]
-#              [--cloud-body FRACTION] [--slice x|y|z]]
+#              [--cloud-body FRACTION] [--slice x|y|z] [--title TEXT]]
 #
 #     It opens the case's .foam file (DIR/<DIR's name>.foam, as paraFoam
 #     -touch makes it, made empty if the case has none), goes to the requested
@@ -29,8 +29,9 @@
 #       --cloud-field CLOUD:NAME:MIN:MAX   the same range check as --field on
 #                                     a field of a lagrangian cloud
 #     MIN and MAX may be 'inf' and '-inf'. With --png it renders the internal
-#     mesh coloured by the first --field (or --colour-by), with a colour bar,
-#     the time in a text annotation, and the clouds as points, sized to
+#     mesh coloured by the first --field (or --colour-by), with a colour bar
+#     titled with the field's units, the domain's outline, the title and
+#     the time above it, and the clouds as points, sized to
 #     about their spacing in the picture, dark grey or coloured by a field
 #     of the cloud (--cloud-colour-by stress:YY:-2e5:0: the vertical stress,
 #     components named as ParaView names them: X, Y, Z, XX, YY, ZZ, XY, YZ,
@@ -159,8 +160,9 @@ def parseArgs(argv):
     p.add_argument('--slice', choices=['x', 'y', 'z'],
                    help='render a slice through the centre of the mesh, '
                         'normal to this axis (for 3D cases)')
-    p.add_argument('--resolution', type=resolutionSpec, default=[800, 600],
-                   metavar='WxH', help='PNG size (default 800x600)')
+    p.add_argument('--resolution', type=resolutionSpec, default=None,
+                   metavar='WxH', help='PNG size (default 800x600, a 2D '
+                   'domain\'s picture shaped to its aspect)')
     p.add_argument('--colour-by', '--color-by', dest='colourBy',
                    help='field to colour the mesh by in the PNG '
                         '(default: the first --field)')
@@ -175,6 +177,9 @@ def parseArgs(argv):
                         'mesh where the cell field FRACTION (the soil '
                         'fraction) is half its largest or more, coloured '
                         'by --cloud-colour-by spread from the points')
+    p.add_argument('--title', default=None,
+                   help='the picture\'s title (the time is added to it; '
+                        'default: the case\'s name)')
     args = p.parse_args(argv)
 
     if args.time != 'latest':
@@ -283,10 +288,65 @@ def checkRange(label, values, nComp, lo, hi, what):
 #------------------------------------------------------------------------------
 # Rendering
 
+# The units of the fields the solver writes, for the colour bars' titles
+UNITS = {
+    'U': 'm/s', 'p': 'Pa', 'rho': 'kg/m3', 'soilFraction': '-',
+    'alpha.water': '-', 'wallShearStress': 'Pa', 'fines': 'kg/m3',
+    'soilVelocity': 'm/s', 'stress': 'Pa', 'plasticStrain': '-',
+    'displacement': 'm', 'porosity': '-', 'velocity': 'm/s',
+    'porePressure': 'Pa', 'finesContent': '-', 'mass': 'kg',
+}
+
+
+def barTitle(name, component=''):
+    """A colour bar's title: the field, its component, its units"""
+    title = name + (' ' + component if component else '')
+    unit = UNITS.get(name)
+    return title + (' [%s]' % unit if unit else '')
+
+
+def placeBar(bar, slot):
+    """A colour bar on the picture's right, below the title: the first
+    (slot 0) in the lower half, a second one above it"""
+    bar.WindowLocation = 'Any Location'
+    bar.Orientation = 'Vertical'
+    bar.Position = [0.8, 0.08 if slot == 0 else 0.5]
+    bar.ScalarBarLength = 0.36
+
+
 def render(args, reader, time, blocks, clouds, colourField):
     import paraview.simple as pv
 
-    width, height = args.resolution
+    # Bounds of the internal mesh (the picture's shape and the camera)
+    bounds = None
+    for ds in asList(blocks.get('/internalMesh')):
+        b = ds.GetBounds()
+        if bounds is None:
+            bounds = list(b)
+        else:
+            bounds = [min(bounds[0], b[0]), max(bounds[1], b[1]),
+                      min(bounds[2], b[2]), max(bounds[3], b[3]),
+                      min(bounds[4], b[4]), max(bounds[5], b[5])]
+
+    if args.resolution:
+        width, height = args.resolution
+    else:
+        # A flat domain's picture shaped to it (a wide tank is not drawn as
+        # a strip in a tall white page, nor a column as a line), with room
+        # for the title above and the colour bars beside
+        width, height = 800, 600
+        if bounds:
+            size = sorted(bounds[2*i + 1] - bounds[2*i] for i in range(3))
+            along = [bounds[2*i + 1] - bounds[2*i] for i in range(3)]
+            if size[0] < 0.05*size[2] or getattr(args, 'slice', None):
+                axes = [i for i in range(3) if
+                        i != ('xyz'.index(args.slice) if args.slice
+                              else min(range(3), key=lambda j: along[j]))]
+                aspect = along[axes[0]]/max(along[axes[1]], 1e-300)
+                if aspect > 1.5:
+                    height = int(max(320, min(600, 700/aspect + 180)))
+                elif aspect < 0.7:
+                    width = int(max(640, min(800, 500*aspect + 480)))
     view = pv.CreateView('RenderView')
     view.ViewSize = [width, height]
     view.ViewTime = time
@@ -297,17 +357,6 @@ def render(args, reader, time, blocks, clouds, colourField):
         pass
     view.Background = [1.0, 1.0, 1.0]
     black = [0.0, 0.0, 0.0]
-
-    # Bounds of the internal mesh
-    bounds = None
-    for ds in asList(blocks.get('/internalMesh')):
-        b = ds.GetBounds()
-        if bounds is None:
-            bounds = list(b)
-        else:
-            bounds = [min(bounds[0], b[0]), max(bounds[1], b[1]),
-                      min(bounds[2], b[2]), max(bounds[3], b[3]),
-                      min(bounds[4], b[4]), max(bounds[5], b[5])]
 
     # The internal mesh (or a slice through its centre), coloured by the
     # field
@@ -324,6 +373,11 @@ def render(args, reader, time, blocks, clouds, colourField):
         mesh.SliceType.Normal = normal
     meshDisplay = pv.Show(mesh, view)
     meshDisplay.Representation = 'Surface'
+    body = getattr(args, 'cloudBody', None)
+    if colourField and body and clouds and colourField[0] == body:
+        # The fraction outlines the body drawn below: the space around it
+        # is left plain (a second colour bar for it would only confuse)
+        colourField = None
     if colourField:
         field, nComp, (vMin, vMax) = colourField
         if nComp > 1:
@@ -338,14 +392,21 @@ def render(args, reader, time, blocks, clouds, colourField):
         lut.AutomaticRescaleRangeMode = 'Never'
         meshDisplay.SetScalarBarVisibility(view, True)
         bar = pv.GetScalarBar(lut, view)
-        bar.Title = field
-        bar.ComponentTitle = '(magnitude)' if nComp > 1 else ''
+        placeBar(bar, 0)
+        bar.Title = barTitle(field, 'magnitude' if nComp > 1 else '')
+        bar.ComponentTitle = ''
         bar.TitleColor = black
         bar.LabelColor = black
         bar.RangeLabelFormat = '%-.4g'
     else:
         meshDisplay.ColorArrayName = ['POINTS', '']
-        meshDisplay.AmbientColor = meshDisplay.DiffuseColor = [0.8, 0.8, 0.8]
+        meshDisplay.AmbientColor = meshDisplay.DiffuseColor = [0.93, 0.93, 0.93]
+
+    # The domain framed: its outline in black
+    frame = pv.Show(pv.Outline(Input=mesh), view)
+    frame.ColorArrayName = ['POINTS', '']
+    frame.AmbientColor = frame.DiffuseColor = black
+    frame.LineWidth = 1.5
 
     # Camera: along the thin direction of a 2D-like mesh (or the slice
     # normal), else isometric
@@ -369,6 +430,8 @@ def render(args, reader, time, blocks, clouds, colourField):
         view.CameraPosition = [centre[i] + direction[i] for i in range(3)]
         view.CameraViewUp = up
     view.CameraParallelProjection = 1 if flat else 0
+    # (a flat domain seen head-on needs no axes triad over it)
+    view.OrientationAxesVisibility = 0 if flat else 1
 
     # The clouds, as points on top: in a 2D-like mesh particles lie inside
     # the slab, behind its front face, so they are moved out towards the
@@ -387,7 +450,6 @@ def render(args, reader, time, blocks, clouds, colourField):
             else (size[0] * size[1] * size[2] / nPoints) ** (1.0 / 3.0)
         pixels = 0.8 * min(width, height) / max(extent, 1e-300)
         pointSize = min(6.0, max(1.5, 0.9 * spacing * pixels))
-    body = getattr(args, 'cloudBody', None)
     for region in clouds:
         cloud = pv.ExtractBlock(Input=reader, Selectors=['/Root/' + region])
         cloudColour = getattr(args, 'cloudColourBy', None)
@@ -438,12 +500,12 @@ def render(args, reader, time, blocks, clouds, colourField):
             lut.AutomaticRescaleRangeMode = 'Never'
             cloudDisplay.SetScalarBarVisibility(view, True)
             bar = pv.GetScalarBar(lut, view)
-            bar.Title = name + (' ' + component if component else '')
+            bar.Title = barTitle(name, component)
             bar.ComponentTitle = ''
             bar.TitleColor = black
             bar.LabelColor = black
             bar.RangeLabelFormat = '%-.4g'
-            bar.WindowLocation = 'Upper Right Corner'
+            placeBar(bar, 1 if colourField else 0)
         else:
             cloudDisplay.ColorArrayName = ['POINTS', '']
             cloudDisplay.AmbientColor = cloudDisplay.DiffuseColor = \
@@ -463,19 +525,37 @@ def render(args, reader, time, blocks, clouds, colourField):
         elif bounds:
             meshDisplay.Opacity = 0.35
 
-    # Time and case in the upper left corner
-    label = 'time = %s' % fmt(time)
-    label += '\ncase: %s' % os.path.basename(os.path.abspath(args.case))
-    if colourField:
-        label += '\nfield: %s' % colourField[0]
-    text = pv.Text(Text=label)
+    # The title and the time, above the picture
+    title = getattr(args, 'title', None) \
+        or 'case %s' % os.path.basename(os.path.abspath(args.case))
+    text = pv.Text(Text='%s, t = %s s' % (title, fmt(time)))
     textDisplay = pv.Show(text, view)
-    textDisplay.WindowLocation = 'Upper Left Corner'
+    textDisplay.WindowLocation = 'Upper Center'
     textDisplay.FontSize = 16
-    textDisplay.Justification = 'Left'
+    textDisplay.Justification = 'Center'
     textDisplay.Color = black
 
     view.ResetCamera()
+    # (paraview.simple resets the camera at a view's first render: that
+    # render done, the fit below stays)
+    pv.Render(view)
+    if flat and bounds:
+        # The domain fitted to the picture, left of the colour bars and
+        # below the title (ResetCamera fits the bounding sphere: a wide
+        # tank came out as a thin strip)
+        screenUp = 2 if thin != 2 else 1
+        screenRight = [i for i in range(3) if i not in (thin, screenUp)][0]
+        across, up = size[screenRight], size[screenUp]
+        usable = 0.72          # of the width: the bars take the rest
+        scale = 0.5*max(up/0.82, across/(0.92*usable)*height/width)
+        focal = list(centre)
+        # (the domain's centre at the middle of the usable part)
+        focal[screenRight] += 0.5*(1 - usable)*2*scale*width/height
+        focal[screenUp] += 0.04*2*scale
+        view.CameraFocalPoint = focal
+        view.CameraPosition = [focal[i] + (1.0 if i == thin else 0.0)
+                               * max(size) for i in range(3)]
+        view.CameraParallelScale = scale
     pv.Render(view)
     pngDir = os.path.dirname(os.path.abspath(args.png))
     if not os.path.isdir(pngDir):
@@ -486,6 +566,7 @@ def render(args, reader, time, blocks, clouds, colourField):
     # without a coloured representation ends in an X error (GLXBadContext)
     # that turns the exit status into 1
     pv.Delete(view)
+    return width, height
 
 
 #------------------------------------------------------------------------------
@@ -637,7 +718,7 @@ def main(argv):
         if os.path.exists(args.png):
             os.remove(args.png)
         try:
-            render(args, reader, time, blocks, clouds, colourField)
+            size = render(args, reader, time, blocks, clouds, colourField)
         except Exception as error:
             print('FAIL png %s: rendering failed: %s: %s'
                   % (args.png, type(error).__name__, error))
@@ -650,7 +731,7 @@ def main(argv):
             print('%s png %s: %s%dx%d, coloured by %s'
                   % ('PASS' if ok else 'FAIL', args.png,
                      '' if written else 'NOT WRITTEN, ',
-                     args.resolution[0], args.resolution[1],
+                     size[0], size[1],
                      colourField[0] if colourField else 'nothing'))
             if not ok:
                 nFail += 1

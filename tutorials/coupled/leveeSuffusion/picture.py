@@ -41,11 +41,13 @@ def main():
     bmd = open(os.path.join(case, 'system', 'blockMeshDict')).read()
     nx, ny, _ = map(int, re.search(
         r'hex\s*\([^)]*\)\s*\((\d+)\s+(\d+)\s+(\d+)\)', bmd).groups())
-    verts = re.findall(r'\(\s*([-+0-9.eE]+)\s+([-+0-9.eE]+)\s+[-+0-9.eE]+\s*\)',
+    verts = re.findall(r'\(\s*([-+0-9.eE]+)\s+([-+0-9.eE]+)\s+([-+0-9.eE]+)\s*\)',
                        re.search(r'vertices\s*\((.*?)\n\);', bmd, re.S).group(1))
     xs = [float(v[0]) for v in verts]
     ys = [float(v[1]) for v in verts]
+    zs = [float(v[2]) for v in verts]
     extent = [min(xs), max(xs), min(ys), max(ys)]
+    depth = max(zs) - min(zs)
 
     written = [t for t in foamio.times(case) if float(t) > 0]
     if not written:
@@ -62,7 +64,10 @@ def main():
         fines = np.asarray(foamio.read(case, t, 'fines')).reshape(ny, nx)
         x = np.asarray(foamio.read_cloud(case, t, 'x')).reshape(-1, 3)
         n = np.asarray(foamio.read_cloud(case, t, 'porosity'))
-        data.append((t, np.sqrt((U**2).sum(axis=2)), fines, x, n))
+        # Each point drawn as a square of its own area (volume over the
+        # case's depth): the soil a continuous body, not dots
+        side = np.sqrt(np.asarray(foamio.read_cloud(case, t, 'volume'))/depth)
+        data.append((t, np.sqrt((U**2).sum(axis=2)), fines, x, n, side))
     # The foundation's porosity from its initial value on (the levee's
     # denser points below it are grey)
     nMax = max(d[4].max() for d in data)
@@ -80,12 +85,21 @@ def main():
     rows = len(data)
     fig, axes = plt.subplots(rows, 3, figsize=(15, 1.55*rows + 0.9),
                              squeeze=False)
-    for r, (t, speed, fines, x, n) in enumerate(data):
+    from matplotlib.collections import PolyCollection
+    for r, (t, speed, fines, x, n, side) in enumerate(data):
         a = axes[r][0]
         cmap = matplotlib.cm.get_cmap('viridis').copy()
         cmap.set_under('0.6')
-        sc = a.scatter(x[:, 0], x[:, 1], c=n, s=2.5, cmap=cmap,
-                       vmin=nMin, vmax=max(nMax, nMin*1.001), linewidths=0)
+        h = 0.5*side[:, None]
+        corners = np.stack([
+            np.column_stack([x[:, 0] - h[:, 0], x[:, 1] - h[:, 0]]),
+            np.column_stack([x[:, 0] + h[:, 0], x[:, 1] - h[:, 0]]),
+            np.column_stack([x[:, 0] + h[:, 0], x[:, 1] + h[:, 0]]),
+            np.column_stack([x[:, 0] - h[:, 0], x[:, 1] + h[:, 0]])], axis=1)
+        sc = PolyCollection(corners, array=n, cmap=cmap, linewidths=0,
+                            edgecolors='face')
+        sc.set_clim(nMin, max(nMax, nMin*1.001))
+        a.add_collection(sc)
         a.set_xlim(extent[0], extent[1])
         a.set_ylim(extent[2], extent[3])
         a.set_facecolor('#dbe9f6')
@@ -100,9 +114,9 @@ def main():
                 a.set_xticklabels([])
         axes[r][0].set_ylabel('t = %s s\ny [m]' % t, fontsize=9)
     for c, (mappable, title) in enumerate((
-            (sc, 'points: porosity (grey: the levee, denser)'),
+            (sc, 'soil: porosity of its points [-] (grey: the levee, denser)'),
             (im1, 'suspended fines [kg/m3 of pore water]'),
-            (im2, 'water |U| (superficial) [m/s]'))):
+            (im2, 'water: |U| (superficial) [m/s]'))):
         axes[0][c].set_title(title, fontsize=10)
         fig.colorbar(mappable, ax=[axes[r][c] for r in range(rows)],
                      shrink=0.9, pad=0.01)

@@ -246,6 +246,15 @@ def main(argv):
             water.ThresholdRange = [0.5, 2.0]
     waterDisplay = pv.Show(water, view)
     waterDisplay.Representation = 'Surface'
+    # The tank framed (its outline: with a free surface the air is white)
+    tank = pv.ExtractBlock(Input=reader, Selectors=['/Root/internalMesh'])
+    if not flat:
+        tank = midSlice(pv, tank, centre)
+    frame = pv.Show(pv.Outline(Input=tank), view)
+    frame.ColorArrayName = ['POINTS', '']
+    frame.AmbientColor = frame.DiffuseColor = black
+    frame.LineWidth = 1.5
+    frame.Position = [0.0, 0.0, 1.02*size[2] + 0.02]
     colourBy(pv, waterDisplay, view, 'CELLS', ('U', 'Magnitude'),
              ('Turbo', 'Jet'), 0.0, uMax, 'water |U| [m/s]', 'Vertical',
              [0.89, 0.15], 0.7)
@@ -284,7 +293,7 @@ def main(argv):
         strainLut, strainBar = colourBy(
             pv, bodyDisplay, view, 'POINTS', ('plasticStrain',),
             ('Inferno (matplotlib)',), 0.0, args.strainMax,
-            'soil plastic strain', 'Horizontal', [0.55, 0.74], 0.3)
+            'soil plastic strain [-]', 'Horizontal', [0.55, 0.74], 0.3)
         # In front of the water (the camera looks along -z)
         bodyDisplay.Position = [0.0, 0.0, 1.01*size[2] + 0.01]
         # Where no soil fraction was written (the start, seeded by
