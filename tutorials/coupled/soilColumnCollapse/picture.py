@@ -294,6 +294,9 @@ def main(argv):
             pv, bodyDisplay, view, 'POINTS', ('plasticStrain',),
             ('Inferno (matplotlib)',), 0.0, args.strainMax,
             'soil plastic strain [-]', 'Horizontal', [0.55, 0.74], 0.3)
+        if not freeSurface:
+            # (over the water's dark colours: the bar's text in white)
+            strainBar.TitleColor = strainBar.LabelColor = [1.0, 1.0, 1.0]
         # In front of the water (the camera looks along -z)
         bodyDisplay.Position = [0.0, 0.0, 1.01*size[2] + 0.01]
         # Where no soil fraction was written (the start, seeded by
