@@ -57,6 +57,8 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    // (an error in a global file names it in parallel too)
+    readGlobalFilesOnEveryProcessor();
 
     // The input is read with overflow untrapped and OpenFOAM's fatal
     // errors ending the run cleanly (caseChecks.H)

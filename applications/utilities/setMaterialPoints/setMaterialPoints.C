@@ -485,6 +485,8 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    // (an error in a global file names it in parallel too)
+    readGlobalFilesOnEveryProcessor();
     // A number such as 1e400 in the input: the parser's error, not a trap
     // (caseChecks.H); the cloud's values are checked where it is read;
     // and OpenFOAM's fatal errors end it cleanly (caseChecks.H)

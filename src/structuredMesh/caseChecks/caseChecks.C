@@ -157,6 +157,23 @@ bool Foam::suspendInputTraps()
 }
 
 
+void Foam::readGlobalFilesOnEveryProcessor()
+{
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    if (IOobject::fileModificationChecking == IOobject::timeStampMaster)
+    {
+        IOobject::fileModificationChecking = IOobject::timeStamp;
+    }
+    else if (IOobject::fileModificationChecking == IOobject::inotifyMaster)
+    {
+        IOobject::fileModificationChecking = IOobject::inotify;
+    }
+}
+
+
 void Foam::restoreInputTraps(const bool wasTrapped)
 {
     if (wasTrapped)
