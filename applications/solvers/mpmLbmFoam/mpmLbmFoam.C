@@ -58,7 +58,8 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     // (an error in a global file names it in parallel too)
-    readGlobalFilesOnEveryProcessor();
+    const IOobject::fileCheckTypes fileChecking =
+        readGlobalFilesOnEveryProcessor();
 
     // The input is read with overflow untrapped and OpenFOAM's fatal
     // errors ending the run cleanly (caseChecks.H)
@@ -114,6 +115,7 @@ int main(int argc, char *argv[])
         }
     );
     restoreInputTraps(inputTrapped);
+    IOobject::fileModificationChecking = fileChecking;
     Time& runTime = *runTimePtr;
     physicsScene& scene = *scenePtr;
 

@@ -485,7 +485,8 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
-    // (an error in a global file names it in parallel too)
+    // (an error in a global file names it in parallel too; nothing is
+    // read after the set-up)
     readGlobalFilesOnEveryProcessor();
     // A number such as 1e400 in the input: the parser's error, not a trap
     // (caseChecks.H); the cloud's values are checked where it is read;

@@ -157,11 +157,13 @@ bool Foam::suspendInputTraps()
 }
 
 
-void Foam::readGlobalFilesOnEveryProcessor()
+Foam::IOobject::fileCheckTypes Foam::readGlobalFilesOnEveryProcessor()
 {
+    const IOobject::fileCheckTypes setting =
+        IOobject::fileModificationChecking;
     if (!Pstream::parRun())
     {
-        return;
+        return setting;
     }
     if (IOobject::fileModificationChecking == IOobject::timeStampMaster)
     {
@@ -171,6 +173,7 @@ void Foam::readGlobalFilesOnEveryProcessor()
     {
         IOobject::fileModificationChecking = IOobject::inotify;
     }
+    return setting;
 }
 
 
