@@ -317,6 +317,7 @@ Foam::lbmBoundaries::lbmBoundaries
     DynamicList<label> bodyGhost, bodyA, bodyB, bodyOf;
     DynamicList<scalar> bodyWa, bodyWb, bodyFraction;
     DynamicList<label> varyingCopy, varyingCopyPatch, varyingCopyFace;
+    DynamicList<label> movingCopy, movingNode, movingAxis;
     DynamicList<label> varyingAbb, varyingAbbPatch, varyingAbbFace;
     DynamicList<label> absorbAbb, absorbFace;
     patchLinks_.setSize(patches.size(), 0);
@@ -482,22 +483,21 @@ Foam::lbmBoundaries::lbmBoundaries
                 }
                 case MOVINGWALL:
                 {
-                    const vector uw = units.toLattice
-                    (
-                        U.boundaryField()[patchi][patchFacei]
-                    );
-                    const scalar cu =
-                        c[q].x()*uw.x() + c[q].y()*uw.y() + c[q].z()*uw.z();
+                    // (the value where the link crosses the patch:
+                    // setMovingValues, below)
                     if (varying_[patchi])
                     {
                         varyingCopy.append(copyGhost.size());
                         varyingCopyPatch.append(patchi);
                         varyingCopyFace.append(patchFacei);
                     }
+                    movingCopy.append(copyGhost.size());
+                    movingNode.append(x);
+                    movingAxis.append(fa.second());
                     copyPatch.append(patchi);
                     copyGhost.append(ghost);
                     copySource.append(opp[q]*nBox + x);
-                    copyValue.append(6.0*w[q]*cu);
+                    copyValue.append(0);
                     break;
                 }
                 default:
@@ -532,11 +532,16 @@ Foam::lbmBoundaries::lbmBoundaries
     varyingCopy_.transfer(varyingCopy);
     varyingCopyPatch_.transfer(varyingCopyPatch);
     varyingCopyFace_.transfer(varyingCopyFace);
+    movingCopy_.transfer(movingCopy);
+    movingNode_.transfer(movingNode);
+    movingAxis_.transfer(movingAxis);
     varyingAbb_.transfer(varyingAbb);
     varyingAbbPatch_.transfer(varyingAbbPatch);
     varyingAbbFace_.transfer(varyingAbbFace);
     absorbAbb_.transfer(absorbAbb);
     absorbFace_.transfer(absorbFace);
+
+    setMovingValues(U, units);
 }
 
 
