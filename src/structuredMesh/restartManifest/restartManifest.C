@@ -685,6 +685,9 @@ void Foam::restartManifest::checkState
         [&]()
         {
             IStringStream is(texts[here ? Pstream::myProcNo() : first]);
+            // (an entry's error names the file, not "IOstream": the
+            // processors' messages may come in either order)
+            is.name() = path;
             const dictionary manifest(is);
             nProcs = manifest.get<label>("nProcessors");
             writer = manifest.get<word>("writer");
