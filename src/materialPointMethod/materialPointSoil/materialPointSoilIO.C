@@ -15,6 +15,7 @@ License
 #include "StringStream.H"
 #include "restartManifest.H"
 #include "IFstream.H"
+#include <fstream>
 #include "selectEntry.H"
 #include "volFields.H"
 
@@ -105,13 +106,28 @@ void Foam::materialPointSoil::checkAgainstWriter() const
     {
         return;
     }
-    dictionary written;
-    if (isFile(path))
+    // The master's text, parsed on every processor under the file's name
+    // (a dictionary scattered as such is named after the stream, and an
+    // entry's error on the other processors named no file; theirs could
+    // be the message printed first)
+    string text;
+    if (Pstream::master() && isFile(path))
     {
-        IFstream is(path);
+        std::ifstream in(path.c_str(), std::ios::binary);
+        text.assign
+        (
+            std::istreambuf_iterator<char>(in),
+            std::istreambuf_iterator<char>()
+        );
+    }
+    Pstream::scatter(text);
+    dictionary written;
+    if (!text.empty())
+    {
+        IStringStream is(text);
+        is.name() = path;
         written = dictionary(is);
     }
-    Pstream::scatter(written);
     if
     (
         written.getOrDefault<word>("writer", word::null) != "setMaterialPoints"
