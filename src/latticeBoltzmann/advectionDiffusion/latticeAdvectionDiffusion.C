@@ -634,6 +634,35 @@ Foam::scalar Foam::latticeAdvectionDiffusion::Phi(const label n) const
 }
 
 
+Foam::scalar Foam::latticeAdvectionDiffusion::take
+(
+    const label n,
+    const scalar amount
+)
+{
+    scalarList& g = current();
+    const label nBox = lattice_.nBox();
+    const scalar held = Phi(n);
+    if (!(amount > 0) || !(held > 0))
+    {
+        return 0;
+    }
+    const scalar keep = amount < held ? 1 - amount/held : 0;
+    scalar left = 0;
+    for (label q = 0; q < Q_; ++q)
+    {
+        g[q*nBox + n] *= keep;
+        left += g[q*nBox + n];
+    }
+
+    // What the node lost, as its populations now sum (the balance closes
+    // on the populations, not on the amount asked)
+    const scalar taken = held - left;
+    sourced_ -= taken*lattice_.cellVolume();
+    return taken;
+}
+
+
 Foam::scalar Foam::latticeAdvectionDiffusion::content() const
 {
     scalar sum = 0;

@@ -181,6 +181,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     u_(fluid_.lattice().nBox(), Zero),
     source_(fluid_.lattice().nBox(), Zero),
     eroded_(0),
+    filtered_(0),
     surfaceSolidFraction_(0),
     minVolumeFraction_(0),
     removeVolume_(0),
@@ -257,6 +258,15 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
             << " are a mass per volume of water " << dimDensity << ", not "
             << suspension_.field().dimensions() << exit(FatalIOError);
     }
+    // Filtration fills clean pores: points without fines start at none
+    if
+    (
+        filtrationLaw::selected(dict_)
+     && !soil_.mpm().points().carriesFines
+    )
+    {
+        soil_.mpm().points().enableFines();
+    }
     if (!law_->surface() && !soil_.mpm().points().carriesFines)
     {
         FatalIOErrorInFunction(dict_)
@@ -279,9 +289,20 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         );
     }
 
+    if (filtrationLaw::selected(dict_))
+    {
+        filtration_ = filtrationLaw::New(dict_);
+        catchDemand_.setSize(fluid_.lattice().nBox(), Zero);
+    }
+
     if (dict_.getOrDefault<bool>("writeBalance", true))
     {
-        wordList columns({"eroded", "suspended", "out"});
+        wordList columns({"eroded"});
+        if (filtration_.valid())
+        {
+            columns.append("filtered");
+        }
+        columns.append(wordList({"suspended", "out"}));
         if (settling_.valid())
         {
             columns.append("deposited");
@@ -290,10 +311,12 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         balanceFile_ = newStepFile
         (
             scene.mesh(), "erosion", "erosion",
-            "Eroded fines [kg]: eroded from the points since the start,"
-            " suspended in the water, out through the patches since the"
-            " start, deposited at walls by settling (with a settlingModel),"
-            " and the balance's defect over the eroded mass",
+            "Fines [kg]: eroded from the points since the start, filtered"
+            " (caught back in the points' pores since the start, with a"
+            " filtrationLaw), suspended in the water, out through the"
+            " patches since the start (net), deposited at walls by settling"
+            " (with a settlingModel), and the balance's defect over the"
+            " largest of these",
             columns
         );
     }
@@ -317,6 +340,10 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         }
     }
 
+    if (filtration_.valid())
+    {
+        filtration_->report(Info);
+    }
     suspension_.report(Info);
     if (settling_.valid())
     {
@@ -339,6 +366,23 @@ Foam::sceneStageList Foam::physicsEffects::erosion::stages() const
 }
 
 
+Foam::label Foam::physicsEffects::erosion::nodeOf(const point& x) const
+{
+    const latticeMesh& lattice = fluid_.lattice();
+    const scalar dx = lattice.dx();
+    const vector& origin = lattice.origin();
+    const labelVector& bs = lattice.boxStart();
+    labelVector b;
+    for (direction d = 0; d < 3; ++d)
+    {
+        b[d] = (d == 2 && lattice.twoD())
+             ? 0
+             : label(std::floor((x[d] - origin[d])/dx)) - bs[d];
+    }
+    return lattice.node(b.x(), b.y(), b.z());
+}
+
+
 void Foam::physicsEffects::erosion::erodePoints()
 {
     const latticeMesh& lattice = fluid_.lattice();
@@ -349,9 +393,6 @@ void Foam::physicsEffects::erosion::erodePoints()
     const scalar dt = scene_.mesh().time().deltaTValue();
     const scalar Vcell = lattice.cellVolume();
     const scalar rhoS = law_->rhoSolid();
-    const scalar dx = lattice.dx();
-    const vector& origin = lattice.origin();
-    const labelVector& bs = lattice.boxStart();
 
     source_ = 0;
     bool changed = false;
@@ -364,15 +405,7 @@ void Foam::physicsEffects::erosion::erodePoints()
             continue;
         }
 
-        // The node of the point's cell
-        labelVector b;
-        for (direction d = 0; d < 3; ++d)
-        {
-            b[d] = (d == 2 && lattice.twoD())
-                 ? 0
-                 : label(std::floor((pts.x[p][d] - origin[d])/dx)) - bs[d];
-        }
-        const label n = lattice.node(b.x(), b.y(), b.z());
+        const label n = nodeOf(pts.x[p]);
 
         const scalar nNode = max(1 - phi[n], 0.01);
         const scalar q = mag(uPhysical_[n] - nNode*soilVelocity[n]);
@@ -408,6 +441,115 @@ void Foam::physicsEffects::erosion::erodePoints()
 }
 
 
+void Foam::physicsEffects::erosion::filterPoints()
+{
+    const scalarList& phi = soil_.solidFraction();
+    const List<vector>& soilVelocity = soil_.nodeVelocity();
+    materialPoints& pts = soil_.mpm().points();
+
+    const scalar dt = scene_.mesh().time().deltaTValue();
+    const scalar Vcell = fluid_.lattice().cellVolume();
+    const scalar rhoS = law_->rhoSolid();
+    const scalar fMax = filtration_->maxFinesContent();
+
+    // The points' porosity never falls below this: a pore space the drag
+    // laws still hold (Kozeny-Carman's permeability ~ n^3)
+    const scalar nMin = 0.01;
+
+    // What each point would catch, and its node's total
+    catchPoint_.setSize(pts.x.size());
+    catchDemand_ = 0;
+    forAll(pts.x, p)
+    {
+        catchPoint_[p] = 0;
+        const scalar f = pts.fines[p];
+        if (!(f < fMax) || !(pts.porosity[p] > nMin))
+        {
+            continue;
+        }
+        const label n = nodeOf(pts.x[p]);
+        const scalar nNode = max(1 - phi[n], 0.01);
+        const scalar q = mag(uPhysical_[n] - nNode*soilVelocity[n]);
+        const scalar C = max(suspension_.Phi(n), scalar(0))/nNode;
+        const scalar m = pts.m[p];
+        const scalar dm = min
+        (
+            filtration_->rate(C, q, f)*pts.V[p]*dt,
+            min
+            (
+                m*(fMax - f)/(1 - fMax),
+                rhoS*pts.V[p]*(pts.porosity[p] - nMin)
+            )
+        );
+        if (dm > 0)
+        {
+            catchPoint_[p] = dm;
+            catchDemand_[n] += dm;
+        }
+    }
+
+    // Each node gives what its points ask, at most what it holds (the
+    // points then share it in proportion to what they asked)
+    forAll(catchDemand_, n)
+    {
+        if (catchDemand_[n] > 0)
+        {
+            const scalar held = max(suspension_.Phi(n), scalar(0))*Vcell;
+            catchDemand_[n] =
+                catchDemand_[n] > held
+              ? held/catchDemand_[n]*(1 - 1e-12)
+              : 1;
+        }
+    }
+
+    // The points gain what their mass can hold exactly ((m + dm) - m:
+    // a tiny dm added to m rounds, the same way step after step), and
+    // each node gives exactly the sum its points gained, so the
+    // suspension's loss and the points' gain are one number
+    bool changed = false;
+    forAll(pts.x, p)
+    {
+        if (!(catchPoint_[p] > 0))
+        {
+            continue;
+        }
+        const label n = nodeOf(pts.x[p]);
+        const scalar m = pts.m[p];
+        const scalar mNew = m + catchPoint_[p]*catchDemand_[n];
+        const scalar gained = mNew - m;
+        catchPoint_[p] = 0;
+        if (!(gained > 0))
+        {
+            continue;
+        }
+        pts.fines[p] = min((pts.fines[p]*m + gained)/mNew, fMax);
+        pts.porosity[p] = max(pts.porosity[p] - gained/(rhoS*pts.V[p]), nMin);
+        pts.m[p] = mNew;
+        catchPoint_[p] = gained;
+        changed = true;
+    }
+    catchDemand_ = 0;
+    forAll(pts.x, p)
+    {
+        if (catchPoint_[p] > 0)
+        {
+            catchDemand_[nodeOf(pts.x[p])] += catchPoint_[p];
+        }
+    }
+    forAll(catchDemand_, n)
+    {
+        if (catchDemand_[n] > 0)
+        {
+            filtered_ += suspension_.take(n, catchDemand_[n]/Vcell)*Vcell;
+        }
+    }
+    if (returnReduce(changed, orOp<bool>()))
+    {
+        soil_.pointsChanged();
+    }
+}
+
+
 void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
 {
     if (stage == sceneStage::transport)
@@ -431,6 +573,10 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
         {
             erodePoints();
         }
+        if (filtration_.valid())
+        {
+            filterPoints();
+        }
         suspension_.step(u_, porosity(), &source_);
     }
     else if (stage == sceneStage::endStep)
@@ -446,21 +592,42 @@ Foam::scalar Foam::physicsEffects::erosion::eroded() const
 }
 
 
+Foam::scalar Foam::physicsEffects::erosion::filtered() const
+{
+    return returnReduce(filtered_, sumOp<scalar>());
+}
+
+
 void Foam::physicsEffects::erosion::writeBalance()
 {
     const scalar e = eroded();
+    const scalar filtered = this->filtered();
     const scalar suspended = suspension_.content();
     const scalar out = sum(suspension_.patchOutflow());
     const scalar deposited = suspension_.deposited();
+    const scalar content0 = suspension_.content0();
+
+    // Over the largest mass the balance moves (the eroded mass where the
+    // soil only erodes; the inflow where it only filters)
+    const scalar scale = max
+    (
+        max(max(e, filtered), max(mag(out), deposited)),
+        max(suspended, content0)
+    );
     const scalar defect =
-        e > 0
-      ? (suspended + out + deposited - suspension_.content0() - e)/e
+        scale > 0
+      ? (suspended + out + deposited + filtered - content0 - e)/scale
       : 0;
     if (balanceFile_->writeToFile())
     {
         OFstream& os = balanceFile_->file();
         balanceFile_->writeCurrentTime(os);
-        os  << tab << e << tab << suspended << tab << out;
+        os  << tab << e;
+        if (filtration_.valid())
+        {
+            os  << tab << filtered;
+        }
+        os  << tab << suspended << tab << out;
         if (settling_.valid())
         {
             os  << tab << deposited;
@@ -476,7 +643,8 @@ Foam::string Foam::physicsEffects::erosion::plan() const
         "points eroded each step, the suspension on a D"
       + Foam::name(fluid_.lattice().nDim()) + "Q"
       + Foam::name(suspension_.Q()) + " lattice (tau "
-      + Foam::name(suspension_.tau()) + ")";
+      + Foam::name(suspension_.tau()) + ")"
+      + (filtration_.valid() ? ", the pores filtering it back" : "");
 }
 
 
@@ -521,7 +689,11 @@ Foam::scalar Foam::physicsEffects::erosion::memoryBytes() const
         suspension_.memoryBytes()
       + returnReduce
         (
-            scalar(uPhysical_.byteSize() + u_.byteSize() + source_.byteSize())
+            scalar
+            (
+                uPhysical_.byteSize() + u_.byteSize() + source_.byteSize()
+              + catchDemand_.byteSize() + catchPoint_.byteSize()
+            )
           + (settling_.valid() ? settling_->memoryBytes() : 0),
             sumOp<scalar>()
         );
@@ -530,9 +702,12 @@ Foam::scalar Foam::physicsEffects::erosion::memoryBytes() const
 
 Foam::string Foam::physicsEffects::erosion::progress() const
 {
-    string s =
-        "eroded " + Foam::name(eroded()) + " kg, suspended "
-      + Foam::name(suspension_.content()) + " kg";
+    string s = "eroded " + Foam::name(eroded()) + " kg, ";
+    if (filtration_.valid())
+    {
+        s += "filtered " + Foam::name(filtered()) + " kg, ";
+    }
+    s += "suspended " + Foam::name(suspension_.content()) + " kg";
     const label nRemoved = returnReduce(removed_, sumOp<label>());
     if (nRemoved)
     {
