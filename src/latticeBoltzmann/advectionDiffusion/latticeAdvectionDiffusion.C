@@ -306,6 +306,12 @@ void Foam::latticeAdvectionDiffusion::buildLinks
 }
 
 
+bool Foam::latticeAdvectionDiffusion::writtenPopulations() const
+{
+    return foundNodeField(lattice_, C_.name() + "G0");
+}
+
+
 void Foam::latticeAdvectionDiffusion::initialise
 (
     const UList<vector>& u,

@@ -42,6 +42,7 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     physicsEffect(scene),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(scene.effect<physicsEffects::soil>("soil").mpm()),
+    addedWaterForce_(nullptr),
     maxForce_(0),
     warm_(false)
 {
@@ -327,9 +328,20 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
             }
         }
     }
-    for (const label n : cellNode)
+    if (addedWaterForce_)
     {
-        fluid_.setForce(n, X[n]);
+        const List<vector>& added = *addedWaterForce_;
+        for (const label n : cellNode)
+        {
+            fluid_.setForce(n, X[n] + added[n]);
+        }
+    }
+    else
+    {
+        for (const label n : cellNode)
+        {
+            fluid_.setForce(n, X[n]);
+        }
     }
 
     soil_.addNodeForces(soilForce_);

@@ -17,6 +17,7 @@ License
 #include "soilEffect.H"
 #include "dragEffect.H"
 #include "dragModel.H"
+#include "buoyancyEffect.H"
 #include "uniformDimensionedFields.H"
 #include "addToRunTimeSelectionTable.H"
 #include "addToMemberFunctionSelectionTable.H"
@@ -182,6 +183,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     source_(fluid_.lattice().nBox(), Zero),
     eroded_(0),
     filtered_(0),
+    mixtureFactor_(0),
     surfaceSolidFraction_(0),
     minVolumeFraction_(0),
     removeVolume_(0),
@@ -295,6 +297,24 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         catchDemand_.setSize(fluid_.lattice().nBox(), Zero);
     }
 
+    if (dict_.getOrDefault<bool>("mixtureDensity", false))
+    {
+        if (!scene.has("buoyancy"))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "mixtureDensity true needs effect buoyancy (the"
+                << " suspension's weight on the water raises the pore"
+                << " pressure, which acts on the soil through buoyancy);"
+                << " add buoyancy to the effects of"
+                << " constant/physicsProperties or set mixtureDensity false"
+                << exit(FatalIOError);
+        }
+        mixtureFactor_ = 1 - fluid_.units().rho0()/law_->rhoSolid();
+        mixtureForce_.setSize(fluid_.lattice().nBox(), Zero);
+        scene.effect<physicsEffects::buoyancy>("buoyancy")
+            .addWaterForce(mixtureForce_);
+    }
+
     if (dict_.getOrDefault<bool>("writeBalance", true))
     {
         wordList columns({"eroded"});
@@ -344,6 +364,12 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     {
         filtration_->report(Info);
     }
+    if (mixtureForce_.size())
+    {
+        Info<< "    The suspension weighs on the water: Phi (1 - rho_w/rho_s)"
+            << " = " << mixtureFactor_ << " Phi times the water's body"
+            << " acceleration" << nl;
+    }
     suspension_.report(Info);
     if (settling_.valid())
     {
@@ -357,7 +383,13 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
 
 Foam::sceneStageList Foam::physicsEffects::erosion::stages() const
 {
-    sceneStageList joined({sceneStage::transport});
+    sceneStageList joined;
+    if (mixtureForce_.size())
+    {
+        // Before buoyancy sets the water's forces (forcing)
+        joined.append(sceneStage::exchange);
+    }
+    joined.append(sceneStage::transport);
     if (balanceFile_.valid())
     {
         joined.append(sceneStage::endStep);
@@ -550,9 +582,41 @@ void Foam::physicsEffects::erosion::filterPoints()
 }
 
 
+void Foam::physicsEffects::erosion::mixtureWeight()
+{
+    // Before the suspension's populations are set: on a restart read
+    // them now (the weight is then the written state's to the last bit);
+    // at a fresh start they are set from the field at the transport stage
+    // of the first step, with the porosity the water has then (this stage
+    // comes before porousFlow gives it), so that step has no weight yet
+    if (!suspension_.initialised())
+    {
+        if (!suspension_.writtenPopulations())
+        {
+            return;
+        }
+        suspension_.prepare(u_, nullptr);
+    }
+    const lbmUnits& units = fluid_.units();
+
+    // Phi [kg/m3 of mixture] x (1 - rho_w/rho_s) x a [m/s2] = N/m3
+    const vector a =
+        mixtureFactor_*units.forceDensityToLattice()
+       *fluid_.bodyAcceleration();
+    for (const label n : fluid_.lattice().cellNode())
+    {
+        mixtureForce_[n] = max(suspension_.Phi(n), scalar(0))*a;
+    }
+}
+
+
 void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
 {
-    if (stage == sceneStage::transport)
+    if (stage == sceneStage::exchange)
+    {
+        mixtureWeight();
+    }
+    else if (stage == sceneStage::transport)
     {
         fluid_.nodalVelocity(uPhysical_);
         const lbmUnits& units = fluid_.units();
@@ -693,6 +757,7 @@ Foam::scalar Foam::physicsEffects::erosion::memoryBytes() const
             (
                 uPhysical_.byteSize() + u_.byteSize() + source_.byteSize()
               + catchDemand_.byteSize() + catchPoint_.byteSize()
+              + mixtureForce_.byteSize()
             )
           + (settling_.valid() ? settling_->memoryBytes() : 0),
             sumOp<scalar>()
