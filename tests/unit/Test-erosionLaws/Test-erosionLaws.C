@@ -30,6 +30,8 @@ Description
     - suffusion: lambda (1 - n) c |q| rho_s above the critical gradient
       and the fines limit, 0 at or below either, the seed concentration
       where the water is clear;
+    - filtration (deepBed): lambda |q| C (1 - f/f_max) for a clean and a
+      half-filled bed, 0 once the pores are full;
     - settling models (section 3): Stokes' 8.99 mm/s at d = 0.1 mm,
       Soulsby's against the table for d = 0.1 to 2 mm, Richardson & Zaki's
       hindrance (1 - phi)^n with Rowe's exponent (4.7 for fine grains,
@@ -48,6 +50,7 @@ Description
 #include "IStringStream.H"
 #include "unitTest.H"
 #include "settlingModel.H"
+#include "filtrationLaw.H"
 
 #include <cmath>
 #include <string>
@@ -217,6 +220,36 @@ static void testSuffusion()
 }
 
 
+// * * * * * * * * * * * * * * * * Filtration * * * * * * * * * * * * * * * //
+
+static autoPtr<filtrationLaw> makeFiltration(const std::string& text)
+{
+    IStringStream is(text);
+    return filtrationLaw::New(dictionary(is));
+}
+
+static void testFiltration()
+{
+    autoPtr<filtrationLaw> law = makeFiltration
+    (
+        "filtrationLaw deepBed; deepBedCoeffs { lambda 5;"
+        " maxFinesContent 0.3; }"
+    );
+    const scalar C = 2, q = 0.05;
+    const scalar clean = law->rate(C, q, 0);
+    check(mag(clean/(5*q*C) - 1) < 1e-15,
+        "deepBed: a clean bed catches lambda |q| C (Iwasaki)",
+        clean/(5*q*C) - 1, 1e-15);
+    const scalar half = law->rate(C, q, 0.15);
+    check(mag(half/(0.5*5*q*C) - 1) < 1e-15,
+        "deepBed: half-filled pores catch half (Herzig et al.'s blocking)",
+        half/(0.5*5*q*C) - 1, 1e-15);
+    check(law->rate(C, q, 0.3) == 0 && law->rate(C, q, 0.35) == 0,
+        "deepBed: full pores catch nothing", 0);
+    check(law->maxFinesContent() == 0.3, "deepBed: maxFinesContent", 0);
+}
+
+
 // * * * * * * * * * * * * * * * * Settling  * * * * * * * * * * * * * * * * //
 
 static autoPtr<settlingModel> makeSettling(const std::string& text)
@@ -363,6 +396,20 @@ static void testBadInput()
         "d 0 is not allowed", "Stokes d = 0");
     settlingFatal("settlingModel Stokes;",
         "'d'", "Stokes without d");
+
+    auto filtrationFatal = [](const std::string& text, const std::string& key,
+        const std::string& what)
+    {
+        unitTest::expectFatal([&]() { makeFiltration(text); }, key, what);
+    };
+    filtrationFatal("filtrationLaw sieve;",
+        "Unknown filtrationLaw type sieve", "unknown filtrationLaw");
+    filtrationFatal("filtrationLaw deepBed;"
+        " deepBedCoeffs { lambda -5; maxFinesContent 0.3; }",
+        "lambda -5 is not allowed", "deepBed lambda < 0");
+    filtrationFatal("filtrationLaw deepBed;"
+        " deepBedCoeffs { lambda 5; maxFinesContent 1; }",
+        "maxFinesContent 1 is not allowed", "deepBed maxFinesContent 1");
 }
 
 
@@ -373,6 +420,7 @@ int main(int argc, char *argv[])
     testExcessShearStress();
     testShields();
     testSuffusion();
+    testFiltration();
     testSettling();
     testBadInput();
 

@@ -169,20 +169,9 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     g_(gravityMagnitude(scene.mesh(), dict_)),
     law_(erosionLaw::New(lawDict(dict_, fluid_, drag_, g_))),
     finesLimit_(finesLimits(scene.mesh(), soil_.mpm())),
-    suspension_
-    (
-        fluid_.lattice(),
-        fluid_.units(),
-        dict_.getOrDefault<word>("field", "fines"),
-        dict_,
-        fluid_.boundaries(),
-        fluid_.U()
-    ),
+    materialSuspension_(soil_.mpm().materials().size(), 0),
     uPhysical_(fluid_.lattice().nBox(), Zero),
     u_(fluid_.lattice().nBox(), Zero),
-    source_(fluid_.lattice().nBox(), Zero),
-    eroded_(0),
-    filtered_(0),
     mixtureFactor_(0),
     surfaceSolidFraction_(0),
     minVolumeFraction_(0),
@@ -192,6 +181,47 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     anyOpen_(false),
     removed_(0)
 {
+    // The suspensions: one, or one per material (its field
+    // <field>.<material>)
+    const word field(dict_.getOrDefault<word>("field", "fines"));
+    if (dict_.getOrDefault<bool>("suspensionPerMaterial", false))
+    {
+        const auto& materials = soil_.mpm().materials();
+        suspensions_.setSize(materials.size());
+        suspensionMaterial_.setSize(materials.size());
+        forAll(materials, mati)
+        {
+            materialSuspension_[mati] = mati;
+            suspensionMaterial_[mati] = materials[mati].name();
+        }
+    }
+    else
+    {
+        suspensions_.setSize(1);
+    }
+    forAll(suspensions_, s)
+    {
+        suspensions_.set
+        (
+            s,
+            new latticeAdvectionDiffusion
+            (
+                fluid_.lattice(),
+                fluid_.units(),
+                suspensionMaterial_.empty()
+              ? field
+              : word(field + "." + suspensionMaterial_[s]),
+                dict_,
+                fluid_.boundaries(),
+                fluid_.U()
+            )
+        );
+    }
+    const label nBox = fluid_.lattice().nBox();
+    sources_.setSize(suspensions_.size(), scalarList(nBox, Zero));
+    eroded_.setSize(suspensions_.size(), Zero);
+    filtered_.setSize(suspensions_.size(), Zero);
+
     if (law_->surface())
     {
         // The densest soil's solid fraction and the largest point at the
@@ -253,12 +283,16 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         emptiedMass_.setSize(nBox, Zero);
         emptiedWeight_.setSize(nBox, Zero);
     }
-    if (suspension_.field().dimensions() != dimDensity)
+    for (const latticeAdvectionDiffusion& susp : suspensions_)
     {
-        FatalIOErrorInFunction(dict_)
-            << suspension_.field().objectPath() << ": the suspended fines"
-            << " are a mass per volume of water " << dimDensity << ", not "
-            << suspension_.field().dimensions() << exit(FatalIOError);
+        if (susp.field().dimensions() != dimDensity)
+        {
+            FatalIOErrorInFunction(dict_)
+                << susp.field().objectPath() << ": the suspended fines"
+                << " are a mass per volume of water " << dimDensity
+                << ", not " << susp.field().dimensions()
+                << exit(FatalIOError);
+        }
     }
     // Filtration fills clean pores: points without fines start at none
     if
@@ -279,16 +313,21 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
 
     if (suspensionSettling::selected(dict_))
     {
-        settling_.reset
-        (
-            new suspensionSettling
+        settling_.setSize(suspensions_.size());
+        forAll(suspensions_, s)
+        {
+            settling_.set
             (
-                dict_,
-                fluid_.units().rho0(),
-                drag_.muFluid()/drag_.rhoFluid(),
-                suspension_
-            )
-        );
+                s,
+                new suspensionSettling
+                (
+                    dict_,
+                    fluid_.units().rho0(),
+                    drag_.muFluid()/drag_.rhoFluid(),
+                    suspensions_[s]
+                )
+            );
+        }
     }
 
     if (filtrationLaw::selected(dict_))
@@ -317,13 +356,28 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
 
     if (dict_.getOrDefault<bool>("writeBalance", true))
     {
-        wordList columns({"eroded"});
+        // Per material (one suspension each), then the totals
+        wordList columns;
+        for (const word& mat : suspensionMaterial_)
+        {
+            columns.append("eroded." + mat);
+            if (filtration_.valid())
+            {
+                columns.append("filtered." + mat);
+            }
+            columns.append(wordList({"suspended." + mat, "out." + mat}));
+            if (settling_.size())
+            {
+                columns.append("deposited." + mat);
+            }
+        }
+        columns.append("eroded");
         if (filtration_.valid())
         {
             columns.append("filtered");
         }
         columns.append(wordList({"suspended", "out"}));
-        if (settling_.valid())
+        if (settling_.size())
         {
             columns.append("deposited");
         }
@@ -370,10 +424,15 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
             << " = " << mixtureFactor_ << " Phi times the water's body"
             << " acceleration" << nl;
     }
-    suspension_.report(Info);
-    if (settling_.valid())
+    if (suspensionMaterial_.size())
     {
-        settling_->model().report(Info);
+        Info<< "    A suspension per material: "
+            << flatOutput(suspensionMaterial_) << nl;
+    }
+    suspensions_[0].report(Info);
+    if (settling_.size())
+    {
+        settling_[0].model().report(Info);
     }
     Info<< endl;
 }
@@ -395,6 +454,12 @@ Foam::sceneStageList Foam::physicsEffects::erosion::stages() const
         joined.append(sceneStage::endStep);
     }
     return joined;
+}
+
+
+Foam::label Foam::physicsEffects::erosion::suspensionOf(const label p) const
+{
+    return materialSuspension_[soil_.mpm().points().material[p]];
 }
 
 
@@ -426,7 +491,10 @@ void Foam::physicsEffects::erosion::erodePoints()
     const scalar Vcell = lattice.cellVolume();
     const scalar rhoS = law_->rhoSolid();
 
-    source_ = 0;
+    for (scalarList& source : sources_)
+    {
+        source = 0;
+    }
     bool changed = false;
     forAll(pts.x, p)
     {
@@ -443,7 +511,7 @@ void Foam::physicsEffects::erosion::erodePoints()
         const scalar q = mag(uPhysical_[n] - nNode*soilVelocity[n]);
         const scalar K = drag_.hydraulicConductivity(phi[n], g_);
         const scalar i = K < VGREAT ? q/K : 0;
-        const scalar c = suspension_.Phi(n)/nNode/rhoS;
+        const scalar c = Phi(n)/nNode/rhoS;
 
         const scalar m = pts.m[p];
         const scalar rate =
@@ -462,8 +530,9 @@ void Foam::physicsEffects::erosion::erodePoints()
         pts.fines[p] = (f*m - lost)/mNew;
         pts.porosity[p] = min(pts.porosity[p] + lost/(rhoS*pts.V[p]), 1.0);
         pts.m[p] = mNew;
-        source_[n] += lost/Vcell;
-        eroded_ += lost;
+        const label s = suspensionOf(p);
+        sources_[s][n] += lost/Vcell;
+        eroded_[s] += lost;
         changed = true;
     }
     if (returnReduce(changed, orOp<bool>()))
@@ -502,7 +571,7 @@ void Foam::physicsEffects::erosion::filterPoints()
         const label n = nodeOf(pts.x[p]);
         const scalar nNode = max(1 - phi[n], 0.01);
         const scalar q = mag(uPhysical_[n] - nNode*soilVelocity[n]);
-        const scalar C = max(suspension_.Phi(n), scalar(0))/nNode;
+        const scalar C = max(Phi(n), scalar(0))/nNode;
         const scalar m = pts.m[p];
         const scalar dm = min
         (
@@ -526,7 +595,7 @@ void Foam::physicsEffects::erosion::filterPoints()
     {
         if (catchDemand_[n] > 0)
         {
-            const scalar held = max(suspension_.Phi(n), scalar(0))*Vcell;
+            const scalar held = max(Phi(n), scalar(0))*Vcell;
             catchDemand_[n] =
                 catchDemand_[n] > held
               ? held/catchDemand_[n]*(1 - 1e-12)
@@ -568,11 +637,31 @@ void Foam::physicsEffects::erosion::filterPoints()
             catchDemand_[nodeOf(pts.x[p])] += catchPoint_[p];
         }
     }
+    // (with several suspensions, from each in proportion to what it
+    // holds there)
     forAll(catchDemand_, n)
     {
         if (catchDemand_[n] > 0)
         {
-            filtered_ += suspension_.take(n, catchDemand_[n]/Vcell)*Vcell;
+            if (suspensions_.size() == 1)
+            {
+                filtered_[0] +=
+                    suspensions_[0].take(n, catchDemand_[n]/Vcell)*Vcell;
+                continue;
+            }
+            const scalar total = Phi(n);
+            forAll(suspensions_, s)
+            {
+                const scalar share = suspensions_[s].Phi(n);
+                if (share > 0 && total > 0)
+                {
+                    filtered_[s] +=
+                        suspensions_[s].take
+                        (
+                            n, catchDemand_[n]/Vcell*share/total
+                        )*Vcell;
+                }
+            }
         }
     }
     if (returnReduce(changed, orOp<bool>()))
@@ -589,13 +678,16 @@ void Foam::physicsEffects::erosion::mixtureWeight()
     // at a fresh start they are set from the field at the transport stage
     // of the first step, with the porosity the water has then (this stage
     // comes before porousFlow gives it), so that step has no weight yet
-    if (!suspension_.initialised())
+    for (latticeAdvectionDiffusion& susp : suspensions_)
     {
-        if (!suspension_.writtenPopulations())
+        if (!susp.initialised())
         {
-            return;
+            if (!susp.writtenPopulations())
+            {
+                return;
+            }
+            susp.prepare(u_, nullptr);
         }
-        suspension_.prepare(u_, nullptr);
     }
     const lbmUnits& units = fluid_.units();
 
@@ -605,7 +697,7 @@ void Foam::physicsEffects::erosion::mixtureWeight()
        *fluid_.bodyAcceleration();
     for (const label n : fluid_.lattice().cellNode())
     {
-        mixtureForce_[n] = max(suspension_.Phi(n), scalar(0))*a;
+        mixtureForce_[n] = max(Phi(n), scalar(0))*a;
     }
 }
 
@@ -624,10 +716,13 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
         {
             u_[n] = units.toLattice(uPhysical_[n]);
         }
-        suspension_.prepare(u_, porosity());
-        if (settling_.valid())
+        forAll(suspensions_, s)
         {
-            settling_->update(suspension_, porosity());
+            suspensions_[s].prepare(u_, porosity());
+            if (settling_.size())
+            {
+                settling_[s].update(suspensions_[s], porosity());
+            }
         }
         if (law_->surface())
         {
@@ -641,7 +736,10 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
         {
             filterPoints();
         }
-        suspension_.step(u_, porosity(), &source_);
+        forAll(suspensions_, s)
+        {
+            suspensions_[s].step(u_, porosity(), &sources_[s]);
+        }
     }
     else if (stage == sceneStage::endStep)
     {
@@ -652,50 +750,97 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
 
 Foam::scalar Foam::physicsEffects::erosion::eroded() const
 {
-    return returnReduce(eroded_, sumOp<scalar>());
+    return returnReduce(sum(eroded_), sumOp<scalar>());
 }
 
 
 Foam::scalar Foam::physicsEffects::erosion::filtered() const
 {
-    return returnReduce(filtered_, sumOp<scalar>());
+    return returnReduce(sum(filtered_), sumOp<scalar>());
+}
+
+
+Foam::scalar Foam::physicsEffects::erosion::suspended() const
+{
+    scalar sum = 0;
+    for (const latticeAdvectionDiffusion& susp : suspensions_)
+    {
+        sum += susp.content();
+    }
+    return sum;
 }
 
 
 void Foam::physicsEffects::erosion::writeBalance()
 {
-    const scalar e = eroded();
-    const scalar filtered = this->filtered();
-    const scalar suspended = suspension_.content();
-    const scalar out = sum(suspension_.patchOutflow());
-    const scalar deposited = suspension_.deposited();
-    const scalar content0 = suspension_.content0();
+    // Per suspension (global), then the totals
+    const label nS = suspensions_.size();
+    scalarList e(nS), filtered(nS), suspended(nS), out(nS), deposited(nS);
+    scalarList content0(nS);
+    forAll(suspensions_, s)
+    {
+        const latticeAdvectionDiffusion& susp = suspensions_[s];
+        e[s] = returnReduce(eroded_[s], sumOp<scalar>());
+        filtered[s] = returnReduce(filtered_[s], sumOp<scalar>());
+        suspended[s] = susp.content();
+        out[s] = sum(susp.patchOutflow());
+        deposited[s] = susp.deposited();
+        content0[s] = susp.content0();
+    }
 
-    // Over the largest mass the balance moves (the eroded mass where the
-    // soil only erodes; the inflow where it only filters)
+    // Each suspension's defect over the largest mass the balance moves
+    // (the eroded mass where the soil only erodes; the inflow where it
+    // only filters), the largest of them
     const scalar scale = max
     (
-        max(max(e, filtered), max(mag(out), deposited)),
-        max(suspended, content0)
+        max(max(sum(e), sum(filtered)), max(sum(mag(out)), sum(deposited))),
+        max(sum(suspended), sum(content0))
     );
-    const scalar defect =
-        scale > 0
-      ? (suspended + out + deposited + filtered - content0 - e)/scale
-      : 0;
+    scalar defect = 0;
+    forAll(suspensions_, s)
+    {
+        const scalar d =
+            scale > 0
+          ? (
+                suspended[s] + out[s] + deposited[s] + filtered[s]
+              - content0[s] - e[s]
+            )/scale
+          : 0;
+        if (mag(d) > mag(defect))
+        {
+            defect = d;
+        }
+    }
+
     if (balanceFile_->writeToFile())
     {
         OFstream& os = balanceFile_->file();
         balanceFile_->writeCurrentTime(os);
-        os  << tab << e;
-        if (filtration_.valid())
+        auto columns = [&](const scalar es, const scalar fs, const scalar ss,
+            const scalar os_, const scalar ds)
         {
-            os  << tab << filtered;
-        }
-        os  << tab << suspended << tab << out;
-        if (settling_.valid())
+            os  << tab << es;
+            if (filtration_.valid())
+            {
+                os  << tab << fs;
+            }
+            os  << tab << ss << tab << os_;
+            if (settling_.size())
+            {
+                os  << tab << ds;
+            }
+        };
+        if (suspensionMaterial_.size())
         {
-            os  << tab << deposited;
+            forAll(suspensions_, s)
+            {
+                columns(e[s], filtered[s], suspended[s], out[s], deposited[s]);
+            }
         }
+        columns
+        (
+            sum(e), sum(filtered), sum(suspended), sum(out), sum(deposited)
+        );
         os  << tab << defect << endl;
     }
 }
@@ -703,12 +848,19 @@ void Foam::physicsEffects::erosion::writeBalance()
 
 Foam::string Foam::physicsEffects::erosion::plan() const
 {
+    const latticeAdvectionDiffusion& susp = suspensions_[0];
     return
-        "points eroded each step, the suspension on a D"
-      + Foam::name(fluid_.lattice().nDim()) + "Q"
-      + Foam::name(suspension_.Q()) + " lattice (tau "
-      + Foam::name(suspension_.tau()) + ")"
-      + (filtration_.valid() ? ", the pores filtering it back" : "");
+        "points eroded each step, "
+      + (
+            suspensions_.size() > 1
+          ? Foam::name(suspensions_.size()) + " suspensions (one per"
+            " material)"
+          : string("the suspension")
+        )
+      + " on a D" + Foam::name(fluid_.lattice().nDim()) + "Q"
+      + Foam::name(susp.Q()) + " lattice (tau " + Foam::name(susp.tau()) + ")"
+      + (filtration_.valid() ? ", the pores filtering it back" : "")
+      + (mixtureForce_.size() ? ", its weight on the water" : "");
 }
 
 
@@ -731,37 +883,55 @@ void Foam::physicsEffects::erosion::write()
                 << "Could not write " << os.name() << exit(FatalError);
         }
     }
-    suspension_.writePopulations();
+    for (const latticeAdvectionDiffusion& susp : suspensions_)
+    {
+        susp.writePopulations();
+    }
 }
 
 
 void Foam::physicsEffects::erosion::updateFields()
 {
-    suspension_.updateField(porosity());
+    for (latticeAdvectionDiffusion& susp : suspensions_)
+    {
+        susp.updateField(porosity());
+    }
 }
 
 
 Foam::wordList Foam::physicsEffects::erosion::stateFiles() const
 {
-    return suspension_.populationFiles();
+    wordList files;
+    for (const latticeAdvectionDiffusion& susp : suspensions_)
+    {
+        files.append(susp.populationFiles());
+    }
+    return files;
 }
 
 
 Foam::scalar Foam::physicsEffects::erosion::memoryBytes() const
 {
-    return
-        suspension_.memoryBytes()
-      + returnReduce
-        (
-            scalar
-            (
-                uPhysical_.byteSize() + u_.byteSize() + source_.byteSize()
-              + catchDemand_.byteSize() + catchPoint_.byteSize()
-              + mixtureForce_.byteSize()
-            )
-          + (settling_.valid() ? settling_->memoryBytes() : 0),
-            sumOp<scalar>()
-        );
+    scalar bytes = 0;
+    for (const latticeAdvectionDiffusion& susp : suspensions_)
+    {
+        bytes += susp.memoryBytes();
+    }
+    scalar local = scalar
+    (
+        uPhysical_.byteSize() + u_.byteSize()
+      + catchDemand_.byteSize() + catchPoint_.byteSize()
+      + mixtureForce_.byteSize()
+    );
+    for (const scalarList& source : sources_)
+    {
+        local += source.byteSize();
+    }
+    for (const suspensionSettling& settle : settling_)
+    {
+        local += settle.memoryBytes();
+    }
+    return bytes + returnReduce(local, sumOp<scalar>());
 }
 
 
@@ -772,7 +942,7 @@ Foam::string Foam::physicsEffects::erosion::progress() const
     {
         s += "filtered " + Foam::name(filtered()) + " kg, ";
     }
-    s += "suspended " + Foam::name(suspension_.content()) + " kg";
+    s += "suspended " + Foam::name(suspended()) + " kg";
     const label nRemoved = returnReduce(removed_, sumOp<label>());
     if (nRemoved)
     {

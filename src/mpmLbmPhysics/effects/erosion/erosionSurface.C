@@ -281,7 +281,10 @@ void Foam::physicsEffects::erosion::erodeSurface()
             break;
         }
     }
-    source_ = 0;
+    for (scalarList& source : sources_)
+    {
+        source = 0;
+    }
     if (!returnReduce(any, orOp<bool>()))
     {
         return;
@@ -368,6 +371,7 @@ void Foam::physicsEffects::erosion::erodeSurface()
         }
         emptied[p] = true;
         gone.append(p);
+        scalarList& source = sources_[suspensionOf(p)];
         forEachShare
         (
             p,
@@ -376,10 +380,10 @@ void Foam::physicsEffects::erosion::erodeSurface()
                 const scalar part = m*demand_[node]*w/asked;
                 emptiedMass_[node] += part;
                 emptiedWeight_[node] += w*weightSum_[node];
-                source_[node] += part/Vcell;
+                source[node] += part/Vcell;
             }
         );
-        eroded_ += m;
+        eroded_[suspensionOf(p)] += m;
     }
     if (returnReduce(gone.size(), sumOp<label>()))
     {
@@ -443,15 +447,16 @@ void Foam::physicsEffects::erosion::erodeSurface()
         const bool goes = !(keep*pts.V0[p] >= removeVolume_);
         const scalar given = goes ? m : m - keep*m;
         const scalar scale = given/asked;
+        scalarList& source = sources_[suspensionOf(p)];
         forDemandNodes
         (
             sw,
             [&](label node, scalar N)
             {
-                source_[node] += scale*demand_[node]*weightSum_[node]*N/Vcell;
+                source[node] += scale*demand_[node]*weightSum_[node]*N/Vcell;
             }
         );
-        eroded_ += given;
+        eroded_[suspensionOf(p)] += given;
 
         // The soil leaves whole, at the point's density: the point shrinks
         // (V and V0 alike: its deformation is unchanged), its porosity and
@@ -476,16 +481,19 @@ void Foam::physicsEffects::erosion::erodeSurface()
     }
 
     // The water's nodes own what the halo images received
-    if (parallel)
-    {
-        halo.addToOwners({haloExchange::field(source_)});
-    }
     const List<unsigned char>& kind = lattice.kind();
-    forAll(source_, n)
+    for (scalarList& source : sources_)
     {
-        if (kind[n] != latticeMesh::OWNED)
+        if (parallel)
         {
-            source_[n] = 0;
+            halo.addToOwners({haloExchange::field(source)});
+        }
+        forAll(source, n)
+        {
+            if (kind[n] != latticeMesh::OWNED)
+            {
+                source[n] = 0;
+            }
         }
     }
 

@@ -1,0 +1,219 @@
+#!/usr/bin/python3
+#------------------------------------------------------------------------------
+#   mpmLbmFoam: coupled material point / lattice Boltzmann soil-water solver
+#------------------------------------------------------------------------------
+# Script
+#     tutorials/coupled/holeErosionTest/holeErosion.py
+#
+# Description
+#     The slot's half-width R(t) of a hole erosion test case against the
+#     analytic solution of Bonelli & Brivois (2008) for a slot: the wall
+#     shear stress of a slot of half-width R under the pressure gradient
+#     dP/L is tau = R dP/L (the momentum balance of the water between the
+#     walls), the walls recede at m_dot/rho_d = kEr (tau - tauC)/rho_d, so
+#         R(t) = R_c + (R0 - R_c) exp(t/t_er),
+#         t_er = L rho_d/(kEr dP),  R_c = tauC L/dP.
+#     (For a pipe tau = R dP/(2 L) and t_er = 2 L rho_d/(kEr dP).) R is
+#     measured where the nodal solid fraction crosses surfaceSolidFraction
+#     (half the soil's, 0.3), averaged over the columns of the middle third.
+#
+#     Prints per written time: t, R/R0, the analytic R/R0, the relative
+#     error; with --tau, the wall shear stress on both walls of the middle
+#     third against R0 dP/L; with --flow, the flow meter's discharge per
+#     unit depth (function object flowMeter) at the written times against
+#     the slot's Poiseuille discharge q = (2/3) R^3 (dP/L)/mu with the
+#     measured R, and the piezometers (function object piezometers) at the
+#     last written time against the linear drop dP (1 - x/L); with --png,
+#     the plot: R(t), the discharge against time with Poiseuille's and
+#     (R0 exp(t/t_er))^3's, the piezometers' pressures.
+#
+# Usage
+#     holeErosion.py CASE [--tau] [--flow] [--png FILE]
+#------------------------------------------------------------------------------
+import math
+import os
+import re
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(
+    os.environ.get('MPMLBM_PROJECT_DIR', os.path.join(here, '..', '..', '..')),
+    'tests', 'lib'))
+import foamio
+
+
+def entry(path, key):
+    """The first number after key in a dictionary file"""
+    text = open(path).read()
+    text = re.sub(r'//.*', '', text)
+    m = re.search(r'\b' + key + r'\s+(?:uniform\s+)?([-+0-9.eE]+)\s*;', text)
+    if not m:
+        sys.exit('%s: no entry %s' % (path, key))
+    return float(m.group(1))
+
+
+def series(case, name, file):
+    """Time and values of postProcessing/<name>/<start>/<file>, every start
+    in order (a restart continues in a new folder)"""
+    root = os.path.join(case, 'postProcessing', name)
+    rows = []
+    if not os.path.isdir(root):
+        return rows
+    for start in sorted(os.listdir(root), key=float):
+        path = os.path.join(root, start, file)
+        if not os.path.exists(path):
+            continue
+        for line in open(path):
+            if line.startswith('#') or not line.strip():
+                continue
+            rows.append([float(v) for v in re.findall(
+                r'[-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?', line)])
+    return rows
+
+
+def main():
+    args = sys.argv[1:]
+    case = args[0]
+    png = args[args.index('--png') + 1] if '--png' in args else None
+
+    bmd = open(os.path.join(case, 'system', 'blockMeshDict')).read()
+    nx, ny, _ = map(int, re.search(
+        r'hex\s*\([^)]*\)\s*\((\d+)\s+(\d+)\s+(\d+)\)', bmd).groups())
+    zero = r'0(?:\.0*)?'
+    length = float(re.search(
+        r'\(\s*%s\s+%s\s+%s\s*\)\s*\(([-+0-9.eE]+)' % (zero, zero, zero),
+        bmd).group(1))
+    dx = length/nx
+    depth = max(float(z) for z in re.findall(
+        r'\(\s*[-+0-9.eE]+\s+[-+0-9.eE]+\s+([-+0-9.eE]+)\s*\)',
+        bmd.split('blocks')[0]))
+    fluid = os.path.join(case, 'constant', 'fluidProperties')
+    mu = entry(fluid, 'rho')*entry(fluid, 'nu')
+    ero = os.path.join(case, 'constant', 'erosionProperties')
+    kEr = entry(ero, 'kEr')
+    tauC = entry(ero, 'tauC')
+    rhoD = entry(os.path.join(case, 'constant', 'soilProperties'), 'rho')
+    dP = entry(os.path.join(case, '0', 'p'), 'value')
+    smp = open(os.path.join(case, 'system', 'setMaterialPointsDict')).read()
+    lowTop = float(re.search(r'max\s*\(\s*\S+\s+([-+0-9.eE]+)', smp).group(1))
+    topBottom = float(re.findall(
+        r'min\s*\(\s*\S+\s+([-+0-9.eE]+)', smp)[1])
+    R0 = 0.5*(topBottom - lowTop)
+    yc = 0.5*(topBottom + lowTop)
+    G = dP/length
+    tEr = rhoD/(kEr*G) if kEr > 0 else float('inf')
+    Rc = tauC/G
+    level = 0.3
+
+    def halfWidth(phi):
+        Rs = []
+        for i in range(nx//3, 2*nx//3):
+            col = [phi[j*nx + i] for j in range(ny)]
+            jc = int(yc/dx)
+            lo = max(j for j in range(jc) if col[j] >= level)
+            hi = min(j for j in range(jc, ny) if col[j] >= level)
+            ylo = (lo + 0.5 + (level - col[lo])/(col[lo + 1] - col[lo]))*dx
+            yhi = (hi - 0.5 + (level - col[hi - 1])/(col[hi] - col[hi - 1]))*dx
+            Rs.append(0.5*(yhi - ylo))
+        return sum(Rs)/len(Rs)
+
+    rows = []
+    for t in foamio.times(case):
+        phi = foamio.read(case, t, 'soilFraction') \
+            if os.path.exists(os.path.join(case, t, 'soilFraction')) else None
+        if phi is None:
+            continue
+        R = halfWidth(phi)
+        Ra = Rc + (R0 - Rc)*math.exp(float(t)/tEr)
+        rows.append((float(t), R/R0, Ra/R0, R/Ra - 1))
+        print('R %s %.6f %.6f %.6f' % (t, R/R0, Ra/R0, R/Ra - 1))
+
+    # The flow meter (m3/s through the depth) and the piezometers
+    flow = series(case, 'flowMeter', 'surfaceFieldValue.dat')
+    piezo = series(case, 'piezometers', 'p')
+    q0 = 2.0/3.0*R0**3*G/mu
+
+    def flowAt(t):
+        near = [r for r in flow if abs(r[0] - t) < 1e-9*max(1, t)]
+        return abs(near[-1][1])/depth if near else None
+
+    if '--flow' in args:
+        for t, RR0, _, _ in rows:
+            q = flowAt(t)
+            if q is None or t <= 0:
+                continue
+            qP = 2.0/3.0*(RR0*R0)**3*G/mu
+            print('Q %g %.6g %.6g %.6f' % (t, q, qP, q/qP - 1))
+        if piezo:
+            last = piezo[-1]
+            for k, x in enumerate((0.25, 0.5, 0.75)):
+                pa = dP*(1 - x)
+                print('piezometer %g %.3f %.6g %.6g %.6f'
+                      % (last[0], x, last[1 + k], pa, last[1 + k]/pa - 1))
+
+    if '--tau' in args:
+        t = foamio.latest_time(case)
+        tau = foamio.read(case, t, 'wallShearStress')
+        jc = int(yc/dx)
+        for side, js in (('bottom', range(jc)), ('top', range(jc, ny))):
+            vals = [max(abs(tau[j*nx + i][0]) for j in js)
+                    for i in range(nx//3, 2*nx//3)]
+            mean = sum(vals)/len(vals)
+            print('tau %s %.6g %.6g %.6f' % (side, mean, R0*G, mean/(R0*G) - 1))
+
+    if png:
+        import matplotlib
+        matplotlib.use('Agg')
+        import matplotlib.pyplot as plt
+        fig, axes = plt.subplots(1, 3, figsize=(15, 4.4))
+        ts = [r[0] for r in rows]
+        tt = [i*ts[-1]/200 for i in range(201)]
+        ax = axes[0]
+        ax.plot(tt, [(Rc + (R0 - Rc)*math.exp(x/tEr))/R0 for x in tt], 'k-',
+                label='Bonelli & Brivois (2008): exp(t/t_er), t_er = %.0f s'
+                % tEr)
+        ax.plot(ts, [r[1] for r in rows], 'o', color='tab:red',
+                label='mpmLbmFoam, dx = R0/%d' % round(R0/dx))
+        ax.set_xlabel('t [s]')
+        ax.set_ylabel('R/R0')
+        ax.set_title('Half-width of the slot')
+        ax.grid(alpha=0.3)
+        ax.legend(loc='upper left', fontsize=8)
+
+        ax = axes[1]
+        if flow:
+            ax.plot([r[0] for r in flow], [abs(r[1])/depth/q0 for r in flow],
+                    '-', color='tab:blue', lw=1.5,
+                    label='flow meter (outlet), every 0.5 s')
+        ax.plot(tt, [((Rc + (R0 - Rc)*math.exp(x/tEr))/R0)**3 for x in tt],
+                'k-', label='Poiseuille with R0 exp(t/t_er): (R/R0)$^3$')
+        ax.plot(ts, [r[1]**3 for r in rows], 'o', color='tab:red', ms=4,
+                label='Poiseuille with the measured R')
+        ax.set_xlabel('t [s]')
+        ax.set_ylabel('q/q0')
+        ax.set_title('Discharge, q0 = (2/3) R0$^3$ (dP/L)/mu = %.3g m$^2$/s'
+                     % q0, fontsize=10)
+        ax.grid(alpha=0.3)
+        ax.legend(loc='upper left', fontsize=8)
+
+        ax = axes[2]
+        if piezo:
+            for k, (x, c) in enumerate(zip((0.25, 0.5, 0.75),
+                                           ('tab:green', 'tab:orange',
+                                            'tab:purple'))):
+                ax.plot([r[0] for r in piezo], [r[1 + k] for r in piezo],
+                        '-', color=c, lw=1.5, label='x = %.2f L' % x)
+                ax.axhline(dP*(1 - x), color=c, ls='--', lw=0.8)
+        ax.set_xlabel('t [s]')
+        ax.set_ylabel('p [Pa]')
+        ax.set_ylim(0, dP)
+        ax.set_title('Piezometers on the axis (dashed: dP (1 - x/L))',
+                     fontsize=10)
+        ax.grid(alpha=0.3)
+        ax.legend(loc='center right', fontsize=8)
+        fig.suptitle('Hole erosion test (2D slot, Wan & Fell 2004): '
+                     'kEr = %g s/m, dP = %g Pa over L = %g m' % (kEr, dP, length))
+        fig.tight_layout()
+        fig.savefig(png, dpi=100)
+
+main()
