@@ -8,18 +8,18 @@
 # Description
 #     Fast suffusion into a dense suspension (the suffusion column of
 #     tests/validation/suffusionColumn with lambda 1000 times its, the
-#     suspension's weight on the water, deep-bed filtration and a
-#     suspension per material all on), serial and on 2 ranks cut across
+#     suspension's weight on the water, deep-bed filtration, hindered
+#     settling onto the walls and a suspension per material all on), serial and on 2 ranks cut across
 #     the flow:
 #     - every written field and cloud file finite;
 #     - the suspension dense: above 300 kg/m3 of pore water at a write
 #       time (grains over a tenth of the pore volume);
-#     - the balance (eroded = filtered + suspended + out) to 1e-12 at
-#       every step, and the soil's solid with it: the points' mass now
-#       plus eroded less filtered equal to their mass at the start
-#       (1e-12 of it);
-#     - 2 ranks = serial: eroded, filtered, suspended and out at every
-#       step within 1e-12 of the eroded mass.
+#     - the balance (eroded = filtered + suspended + out + deposited) to
+#       1e-12 at every step, and the soil's solid with it: the points'
+#       mass now plus eroded less filtered equal to their mass at the
+#       start (1e-12 of it);
+#     - 2 ranks = serial: eroded, filtered, suspended, out and deposited
+#       at every step within 1e-12 of the eroded mass.
 #     Prints PASS:/FAIL: lines.
 #------------------------------------------------------------------------------
 import os
@@ -86,8 +86,8 @@ scale = np.abs(A['eroded']).max()
 n = min(len(A['eroded']), len(B['eroded']))
 same = len(A['eroded']) == len(B['eroded']) and max(
     np.abs(A[c][:n] - B[c][:n]).max()
-    for c in ('eroded', 'filtered', 'suspended', 'out')) / scale
+    for c in ('eroded', 'filtered', 'suspended', 'out', 'deposited')) / scale
 ok &= foamio.check(len(A['eroded']) == len(B['eroded']) and same < 1e-12,
-                   '2 ranks = serial: eroded, filtered, suspended, out at'
-                   ' every step within 1e-12', '%.2e' % same)
+                   '2 ranks = serial: eroded, filtered, suspended, out,'
+                   ' deposited at every step within 1e-12', '%.2e' % same)
 sys.exit(0 if ok else 1)
