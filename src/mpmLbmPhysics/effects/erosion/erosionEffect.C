@@ -18,6 +18,7 @@ License
 #include "dragEffect.H"
 #include "dragModel.H"
 #include "buoyancyEffect.H"
+#include "selectEntry.H"
 #include "uniformDimensionedFields.H"
 #include "addToRunTimeSelectionTable.H"
 #include "addToMemberFunctionSelectionTable.H"
@@ -169,6 +170,10 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     g_(gravityMagnitude(scene.mesh(), dict_)),
     law_(erosionLaw::New(lawDict(dict_, fluid_, drag_, g_))),
     finesLimit_(finesLimits(scene.mesh(), soil_.mpm())),
+    maxConcentration_
+    (
+        dict_.getOrDefault<scalar>("maxConcentration", 0.6*law_->rhoSolid())
+    ),
     materialSuspension_(soil_.mpm().materials().size(), 0),
     uPhysical_(fluid_.lattice().nBox(), Zero),
     u_(fluid_.lattice().nBox(), Zero),
@@ -181,6 +186,20 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     anyOpen_(false),
     removed_(0)
 {
+    if
+    (
+        !(maxConcentration_ > 0)
+     || !(maxConcentration_ <= law_->rhoSolid())
+    )
+    {
+        entryNotAllowed
+        (
+            dict_, "maxConcentration", maxConcentration_,
+            "the most fines the pore water carries [kg/m3 of pore water],"
+            " in (0, rhoSolid " + Foam::name(law_->rhoSolid()) + "]"
+        );
+    }
+
     // The suspensions: one, or one per material (its field
     // <field>.<material>)
     const word field(dict_.getOrDefault<word>("field", "fines"));
@@ -516,7 +535,20 @@ void Foam::physicsEffects::erosion::erodePoints()
         const scalar m = pts.m[p];
         const scalar rate =
             law_->internalRate(pts.porosity[p], f - fLim, c, q, i);
-        const scalar dm = min(rate*pts.V[p]*dt, m*(f - fLim)/(1 - fLim));
+
+        // At most what the node's pore water can still carry
+        scalar sourced = 0;
+        for (const scalarList& source : sources_)
+        {
+            sourced += source[n];
+        }
+        const scalar room =
+            (maxConcentration_*nNode - Phi(n) - sourced)*Vcell;
+        const scalar dm = min
+        (
+            min(rate*pts.V[p]*dt, m*(f - fLim)/(1 - fLim)),
+            room
+        );
         if (!(dm > 0))
         {
             continue;

@@ -259,10 +259,20 @@ void Foam::physicsEffects::erosion::surfaceDemand()
         }
         wallShear_[n] = tw;
 
+        // At most what the node's pore water can still carry
         const scalar rate = law_->surfaceRate(mag(tw));
         if (rate > 0)
         {
-            demand_[n] = rate*columnArea/mag(normal[axis])*dt;
+            const scalar room =
+                (
+                    maxConcentration_*max(1 - phi_[n], scalar(0.01))
+                  - Phi(n)
+                )*lattice.cellVolume();
+            demand_[n] = max
+            (
+                min(rate*columnArea/mag(normal[axis])*dt, room),
+                scalar(0)
+            );
         }
     }
 }
