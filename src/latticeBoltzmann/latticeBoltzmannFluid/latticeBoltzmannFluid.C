@@ -673,6 +673,12 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         // nodes)
         freeSurface_->exchangeBoundaryMass(f.cdata());
         freeSurface_->pressureLinkMass(f.cdata(), boundaries_());
+        freeSurface_->slipLinks
+        (
+            f.data(),
+            boundaries_(),
+            units_.accelerationToLattice(bodyAcceleration_)
+        );
     }
     prepared_ = true;
 }

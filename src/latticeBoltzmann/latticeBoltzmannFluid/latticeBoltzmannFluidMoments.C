@@ -110,6 +110,16 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
         freeSurface_.get(),
         units_.accelerationToLattice(bodyAcceleration_)
     );
+    if (freeSurface_)
+    {
+        freeSurface_->slipLinks
+        (
+            scratch_.data(),
+            boundaries_(),
+            units_.accelerationToLattice(bodyAcceleration_),
+            false
+        );
+    }
 
     const scalar factor = 1 - 0.5/units_.tau();
     const scalar toPa = units_.rho0()*sqr(units_.velocityScale());

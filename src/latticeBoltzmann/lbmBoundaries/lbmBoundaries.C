@@ -311,6 +311,7 @@ Foam::lbmBoundaries::lbmBoundaries
     DynamicList<label> copyGhost, copySource;
     DynamicList<scalar> copyValue;
     DynamicList<label> abbGhost, abbSource, abbNode, abbDir;
+    DynamicList<label> slipNode, slipDir, slipGhost, slipSource;
     DynamicList<scalar> abbRho;
     DynamicList<FixedList<label, 4>> abbFaces;
     DynamicList<label> copyPatch, abbPatch;
@@ -472,6 +473,10 @@ Foam::lbmBoundaries::lbmBoundaries
                         copyGhost.append(ghost);
                         copySource.append(qm*nBox + y);
                         copyValue.append(0);
+                        slipNode.append(x);
+                        slipDir.append(q);
+                        slipGhost.append(ghost);
+                        slipSource.append(y);
                         break;
                     }
                     // No such node (a corner of missing cells): bounce back
@@ -523,6 +528,10 @@ Foam::lbmBoundaries::lbmBoundaries
     bodyFraction_.transfer(bodyFraction);
     copySource_.transfer(copySource);
     copyValue_.transfer(copyValue);
+    slipNode_.transfer(slipNode);
+    slipDir_.transfer(slipDir);
+    slipGhost_.transfer(slipGhost);
+    slipSource_.transfer(slipSource);
     abbGhost_.transfer(abbGhost);
     abbSource_.transfer(abbSource);
     abbNode_.transfer(abbNode);

@@ -381,6 +381,59 @@ void Foam::lbmFreeSurface::pressureLinkMass
 }
 
 
+void Foam::lbmFreeSurface::slipLinks
+(
+    scalar* f,
+    const lbmBoundaries& boundaries,
+    const vector& g,
+    const bool exchange
+)
+{
+    const labelList& opp = vs_.opp();
+    const List<labelVector>& c = vs_.c();
+    const labelList& node = boundaries.slipLinkNodes();
+    const labelList& dir = boundaries.slipLinkDirections();
+    const labelList& ghost = boundaries.slipLinkGhosts();
+    const labelList& partner = boundaries.slipLinkPartners();
+    forAll(node, i)
+    {
+        const label x = node[i];
+        if (type_[x] != INTERFACE)
+        {
+            continue;
+        }
+        const label y = partner[i];
+        const label t = type_[y];
+        const label q = dir[i];
+        const label slot = layout_->remap(ghost[i]);
+        if (exchange)
+        {
+            // As a neighbour's link (exchangeMass): the whole from liquid,
+            // the mean fill level's share from an interface node, none
+            // from the gas
+            const scalar s =
+                t == LIQUID ? 1
+              : t == INTERFACE ? 0.5*(fill_[x] + fill_[y])
+              : 0;
+            mass_[x] += (s - 1)*(f[slot] - f[layout_->at(opp[q], x)]);
+        }
+        if (t == GAS)
+        {
+            // The population the gas sends, as reconstruct's for a link
+            // to a gas node
+            scalar rho;
+            vector u;
+            moments(f, x, g, rho, u);
+            f[slot] = gasPopulation
+            (
+                f, x, q, u, porosity(x),
+                gasState(x, g).density(-0.5*vector(c[q]))
+            );
+        }
+    }
+}
+
+
 Foam::lbmFreeSurface::gasAtSurface Foam::lbmFreeSurface::gasState
 (
     const label x,

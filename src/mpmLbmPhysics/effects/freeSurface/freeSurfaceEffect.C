@@ -132,31 +132,12 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
         scene.effect<physicsEffects::porousFlow>("porousFlow");
     }
 
-    // The boundaries that read only their own node's populations work
-    // where the surface meets them (walls, inlets, pressure patches: the
-    // interface nodes count what their links bring); a slip wall's
-    // specular reflection reads its neighbours', which may be gas nodes
-    // (not yet handled: refused rather than wrong)
-    {
-        const List<lbmBoundaries::patchKind>& kinds =
-            fluid_.boundaries().patchKinds();
-        const polyBoundaryMesh& patches = scene.mesh().boundaryMesh();
-        forAll(kinds, patchi)
-        {
-            if (kinds[patchi] == lbmBoundaries::SLIP)
-            {
-                FatalErrorInFunction
-                    << "freeSurface: patch " << patches[patchi].name()
-                    << " is a slip boundary of the water (0/U), which the"
-                    << " free surface does not support yet." << nl
-                    << "    Allowed with freeSurface: walls (noSlip, also"
-                    << " moving: fixedValue U), velocity inlets and pressure"
-                    << " patches under the water; the gas pressure"
-                    << " (constant/freeSurfaceProperties gasPressure) acts"
-                    << " on the water's surface" << exit(FatalError);
-            }
-        }
-    }
+    // Every boundary works where the surface meets it: walls, inlets and
+    // pressure patches read only their own node's populations (the
+    // interface nodes count what their links bring); a slip wall's link
+    // pairs its node with the node beside it along the wall, and
+    // exchanges mass with it as with a neighbour (the gas's population
+    // where that node is gas: lbmFreeSurface::slipLinks)
 
     const scalar gasPressure = dict_.getOrDefault<scalar>("gasPressure", 0);
     const scalar fillMargin = dict_.getOrDefault<scalar>("fillMargin", 1e-3);
