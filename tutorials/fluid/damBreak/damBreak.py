@@ -3,7 +3,7 @@
 #   mpmLbmFoam: coupled material point / lattice Boltzmann soil-water solver
 #------------------------------------------------------------------------------
 # Script
-#     damBreak.py CASE [--a A] [--png FILE]
+#     damBreak.py CASE [--a A] [--png FILE] [--label TEXT]
 #
 # Description
 #     The surge front of the Martin & Moyce 1952 dam break (column of width
@@ -65,6 +65,8 @@ if __name__ == '__main__':
     case = sys.argv[1]
     a = float(sys.argv[sys.argv.index('--a') + 1]) if '--a' in sys.argv else 0.05715
     png = sys.argv[sys.argv.index('--png') + 1] if '--png' in sys.argv else None
+    label = (sys.argv[sys.argv.index('--label') + 1] if '--label' in sys.argv
+             else 'mpmLbmFoam (free-surface LBM)')
     T, Z = front(case, a)
     Ti, Zi, Zm, e = errors(T, Z)
     for row in zip(Ti, Zi, Zm):
@@ -87,7 +89,7 @@ if __name__ == '__main__':
         grid = fig.add_gridspec(4, 3, width_ratios=[1.25, 1.25, 0.04],
                                 wspace=0.25, hspace=0.15)
         ax = fig.add_subplot(grid[:, 0])
-        ax.plot(T, Z, '-', label='mpmLbmFoam (free-surface LBM)')
+        ax.plot(T, Z, '-', label=label)
         ax.plot(T_MM, Z_MM, 'o', label='Martin & Moyce 1952 ($n^2 = 2$)')
         ax.set_xlabel(r'$T = t\,\sqrt{2g/a}$')
         ax.set_ylabel(r'$Z = x_{front}/a$')
