@@ -305,7 +305,6 @@ Foam::lbmBoundaries::lbmBoundaries
     const label nBox = lattice_.nBox();
     const label Q = vs_.Q();
     const List<labelVector>& c = vs_.c();
-    const scalarList& w = vs_.w();
     const labelList& opp = vs_.opp();
 
     DynamicList<label> copyGhost, copySource;

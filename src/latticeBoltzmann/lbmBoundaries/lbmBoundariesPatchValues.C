@@ -294,11 +294,9 @@ void Foam::lbmBoundaries::update
         }
     }
 
-    // Ladd's bounce-back term 6 w_q c_q.u_w of the wall velocity (as the
-    // constructor sets it), and the pressure links' density
-    const List<labelVector>& c = vs_.c();
-    const scalarList& w = vs_.w();
-    const label nBox = lattice_.nBox();
+    // Ladd's bounce-back term 6 w_q c_q.u_w of the wall velocity where
+    // each link crosses the patch (setMovingValues, as the constructor
+    // sets it), and the pressure links' density
     if (returnReduce(varyingCopy_.size(), sumOp<label>()))
     {
         setMovingValues(U, units);
