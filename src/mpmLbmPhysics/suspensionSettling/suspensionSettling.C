@@ -110,7 +110,8 @@ Foam::suspensionSettling::suspensionSettling
 void Foam::suspensionSettling::update
 (
     latticeAdvectionDiffusion& s,
-    const scalarList* porosity
+    const scalarList* porosity,
+    const scalarList* mixturePhi
 )
 {
     const settlingModel& m = *model_;
@@ -119,7 +120,8 @@ void Foam::suspensionSettling::update
     {
         const scalar eps = porosity ? (*porosity)[n] : 1;
         // (Phi = n C: the suspension per volume of mixture)
-        const scalar phi = m.hindered() ? s.Phi(n)/(eps*rhoS) : 0;
+        const scalar Phi = mixturePhi ? (*mixturePhi)[n] : s.Phi(n);
+        const scalar phi = m.hindered() ? Phi/(eps*rhoS) : 0;
         ws_[n] = (m.velocity(phi)*toLattice_)*down_;
     }
     s.setSettling(&ws_);

@@ -11,7 +11,8 @@
 #     suspension (case ONE) and once with a suspension per material (case
 #     PER, suspensionPerMaterial true: fines.gravel and fines.gravelB).
 #     The suspensions are carried alike and the laws see their sum, so:
-#     - PER's totals (eroded, suspended, out) equal ONE's at every step
+#     - PER's totals (eroded, suspended, out, deposited: the fines settle,
+#       each kind hindered by all the grains) equal ONE's at every step
 #       within 1e-12 of the eroded mass;
 #     - PER's per-material columns add up to its totals (1e-13);
 #     - each material's eroded mass is what its points lost, from the
@@ -58,12 +59,21 @@ def balance(case):
 A, B = balance(one), balance(per)
 ok = True
 scale = np.abs(A['eroded']).max()
-diff = max(np.abs(A[c] - B[c]).max() for c in ('eroded', 'suspended', 'out'))
+columns = [c for c in ('eroded', 'suspended', 'out', 'deposited') if c in A]
+diff = max(np.abs(A[c] - B[c]).max() for c in columns)
 ok &= foamio.check(diff < 1e-12 * scale, 'suspension per material: the'
-                   ' totals (eroded, suspended, out) equal one suspension\'s'
-                   ' at every step', '%.2e of %.4g kg' % (diff / scale, scale))
+                   ' totals (%s) equal one suspension\'s at every step'
+                   % ', '.join(columns),
+                   '%.2e of %.4g kg' % (diff / scale, scale))
+if 'deposited' in A:
+    # Settling that the hindrance of each kind by its own grains alone
+    # would make faster: the check above sees it only if grains deposit
+    ok &= foamio.check(A['deposited'][-1] > 0.05 * scale, 'suspension per'
+                       ' material: fines deposited by settling',
+                       '%.3g kg of %.4g eroded'
+                       % (A['deposited'][-1], scale))
 sums = max(np.abs(sum(B[c + '.' + m] for m in mats) - B[c]).max()
-           for c in ('eroded', 'suspended', 'out'))
+           for c in columns)
 ok &= foamio.check(sums < 1e-13 * scale, 'suspension per material: the'
                    ' materials\' columns add up to the totals',
                    '%.2e' % (sums / scale))

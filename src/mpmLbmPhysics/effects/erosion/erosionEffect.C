@@ -603,7 +603,7 @@ void Foam::physicsEffects::erosion::filterPoints()
         const label n = nodeOf(pts.x[p]);
         const scalar nNode = max(1 - phi[n], 0.01);
         const scalar q = mag(uPhysical_[n] - nNode*soilVelocity[n]);
-        const scalar C = max(Phi(n), scalar(0))/nNode;
+        const scalar C = Phi(n)/nNode;
         const scalar m = pts.m[p];
         const scalar dm = min
         (
@@ -627,7 +627,7 @@ void Foam::physicsEffects::erosion::filterPoints()
     {
         if (catchDemand_[n] > 0)
         {
-            const scalar held = max(Phi(n), scalar(0))*Vcell;
+            const scalar held = Phi(n)*Vcell;
             catchDemand_[n] =
                 catchDemand_[n] > held
               ? held/catchDemand_[n]*(1 - 1e-12)
@@ -684,7 +684,7 @@ void Foam::physicsEffects::erosion::filterPoints()
             const scalar total = Phi(n);
             forAll(suspensions_, s)
             {
-                const scalar share = suspensions_[s].Phi(n);
+                const scalar share = max(suspensions_[s].Phi(n), scalar(0));
                 if (share > 0 && total > 0)
                 {
                     filtered_[s] +=
@@ -729,7 +729,7 @@ void Foam::physicsEffects::erosion::mixtureWeight()
        *fluid_.bodyAcceleration();
     for (const label n : fluid_.lattice().cellNode())
     {
-        mixtureForce_[n] = max(Phi(n), scalar(0))*a;
+        mixtureForce_[n] = Phi(n)*a;
     }
 }
 
@@ -748,12 +748,31 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
         {
             u_[n] = units.toLattice(uPhysical_[n]);
         }
-        forAll(suspensions_, s)
+        for (latticeAdvectionDiffusion& susp : suspensions_)
         {
-            suspensions_[s].prepare(u_, porosity());
-            if (settling_.size())
+            susp.prepare(u_, porosity());
+        }
+        if (settling_.size())
+        {
+            // Several kinds of grains: each hindered by all of them
+            const bool mixed =
+                suspensions_.size() > 1 && settling_[0].model().hindered();
+            if (mixed)
             {
-                settling_[s].update(suspensions_[s], porosity());
+                mixturePhi_.setSize(fluid_.lattice().nBox());
+                for (const label n : fluid_.lattice().cellNode())
+                {
+                    mixturePhi_[n] = Phi(n);
+                }
+            }
+            forAll(suspensions_, s)
+            {
+                settling_[s].update
+                (
+                    suspensions_[s],
+                    porosity(),
+                    mixed ? &mixturePhi_ : nullptr
+                );
             }
         }
         if (law_->surface())

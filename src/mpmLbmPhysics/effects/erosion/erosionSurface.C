@@ -368,7 +368,7 @@ void Foam::physicsEffects::erosion::erodeSurface()
     // the water at once.
     emptiedMass_ = 0;
     emptiedWeight_ = 0;
-    List<bool> emptied(pts.size(), false);
+    List<bool> emptied(max(pts.size(), label(0)), false);
     DynamicList<label> gone;
     forAll(pts.x, p)
     {
