@@ -512,7 +512,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         labelListList needed(recvNodes.size());
         forAll(recvNodes, proci)
         {
-            boolList use(Q, false);
+            boolList use(max(Q, label(1)), false);
             for (const label h : recvNodes[proci])
             {
                 for (label q = 0; q < Q; ++q)
@@ -672,6 +672,7 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         // (what the walls, inlets and pressure patches send the surface's
         // nodes)
         freeSurface_->exchangeBoundaryMass(f.cdata());
+        freeSurface_->bodyLinkMass(boundaries_());
         freeSurface_->pressureLinkMass(f.cdata(), boundaries_());
         freeSurface_->slipLinks
         (

@@ -58,6 +58,7 @@ void Foam::latticeBoltzmannFluid::wallForce
         f.cdata(),
         layout_,
         porosity_.size() ? porosity_.cdata() : nullptr,
+        units_.accelerationToLattice(bodyAcceleration_),
         selectedPatches,
         selectedBodies,
         CofR,

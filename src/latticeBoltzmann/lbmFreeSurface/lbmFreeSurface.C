@@ -348,6 +348,20 @@ Foam::scalar Foam::lbmFreeSurface::gasLinkDensity
 }
 
 
+void Foam::lbmFreeSurface::bodyLinkMass(const lbmBoundaries& boundaries)
+{
+    const labelList& node = boundaries.bodyLinkNodes();
+    const scalarList& correction = boundaries.bodyLinkCorrections();
+    forAll(node, k)
+    {
+        if (type_[node[k]] == INTERFACE)
+        {
+            mass_[node[k]] += correction[k];
+        }
+    }
+}
+
+
 void Foam::lbmFreeSurface::pressureLinkMass
 (
     const scalar* f,
