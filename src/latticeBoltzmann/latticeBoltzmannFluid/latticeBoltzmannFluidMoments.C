@@ -51,14 +51,32 @@ void Foam::latticeBoltzmannFluid::wallForce
     // exchanges the same values again
     scalarList& f = current();
     exchangeHalo(f.data());
+    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+    const scalar* porosity = porosity_.size() ? porosity_.cdata() : nullptr;
+    if (freeSurface_)
+    {
+        // The wall slots as the next step fills them, on a copy (the
+        // fill is the step's: the gas's populations into the interface
+        // nodes, then the boundaries and the slip links, no mass
+        // exchanged)
+        scratch_ = f;
+        setFreeSurfaceForces();
+        freeSurface_->reconstruct(scratch_.data(), g, false);
+        boundaries_->fill
+        (
+            scratch_.data(), layout_, porosity, freeSurface_.get(), g
+        );
+        freeSurface_->slipLinks(scratch_.data(), boundaries_(), g, false);
+    }
 
     vector P, M, Prest, Mrest;
     boundaries_->wallMomentum
     (
-        f.cdata(),
+        freeSurface_ ? scratch_.cdata() : f.cdata(),
         layout_,
-        porosity_.size() ? porosity_.cdata() : nullptr,
-        units_.accelerationToLattice(bodyAcceleration_),
+        porosity,
+        g,
+        freeSurface_.get(),
         selectedPatches,
         selectedBodies,
         CofR,

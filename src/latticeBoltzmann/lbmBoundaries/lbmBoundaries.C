@@ -454,17 +454,21 @@ Foam::lbmBoundaries::lbmBoundaries
                             tangential[a] = 0;
                         }
                     }
-                    if (tangential == c[q])
-                    {
-                        // Concave corner: only the diagonal node is a wall
-                        mirror[fa.second()] = -mirror[fa.second()];
-                        tangential[fa.second()] = 0;
-                    }
+                    // At a wall's edge pointing into the water (only the
+                    // diagonal node is a wall) the link bounces back: a
+                    // mirror through one axis took the population that
+                    // node y sends past the edge into the water (which
+                    // the water node there takes too), and the one x
+                    // sends into the edge reached no node (an L-shaped
+                    // container with slip walls lost or gained water at
+                    // its inner corner at every step)
+                    const bool edge = (tangential == c[q]);
                     const label qm = vs_.direction(mirror);
                     const label y = x - offsetOf(tangential);
                     if
                     (
-                        qm > 0
+                        !edge
+                     && qm > 0
                      && (
                             kind[y] == latticeMesh::OWNED
                          || kind[y] == latticeMesh::HALO
@@ -481,7 +485,8 @@ Foam::lbmBoundaries::lbmBoundaries
                         slipSource.append(y);
                         break;
                     }
-                    // No such node (a corner of missing cells): bounce back
+                    // No such node (a corner of missing cells), or an
+                    // edge: bounce back
                     copyPatch.append(patchi);
                     copyGhost.append(ghost);
                     copySource.append(opp[q]*nBox + x);
@@ -818,6 +823,7 @@ void Foam::lbmBoundaries::wallMomentum
     const lbmLayout& layout,
     const scalar* porosity,
     const vector& g,
+    const lbmFreeSurface* freeSurface,
     const boolList& selected,
     const boolList& selectedBodies,
     const point& CofR,
@@ -859,6 +865,10 @@ void Foam::lbmBoundaries::wallMomentum
         const labelVector& cq = c[q];
         const label x =
             s + cq.x()*stride.x() + cq.y()*stride.y() + cq.z()*stride.z();
+        if (freeSurface && freeSurface->gas(x))
+        {
+            return;
+        }
         vector dP(Zero);
         vector dPrest(Zero);
         bool any = false;
@@ -897,12 +907,20 @@ void Foam::lbmBoundaries::wallMomentum
         }
     };
 
+    // With a free surface f is filled (the wall slots hold what the next
+    // step pulls: the gas's rebuilt populations, the surface's pressure
+    // links and slip links): read there. (Recomputed from the gas nodes'
+    // populations, a slip wall's links beside the surface read the
+    // populations the gas node had when it was last water.)
     const linkSlots& sl = slots(layout);
     forAll(copyGhost_, i)
     {
         add
         (
-            copyGhost_[i], f[sl.copySource[i]] + copyValue_[i],
+            copyGhost_[i],
+            freeSurface
+          ? f[sl.copyGhost[i]]
+          : f[sl.copySource[i]] + copyValue_[i],
             copyPatch_[i]
         );
     }
@@ -910,7 +928,10 @@ void Foam::lbmBoundaries::wallMomentum
     {
         add
         (
-            abbGhost_[i], pressureLinkValue(f, layout, porosity, i),
+            abbGhost_[i],
+            freeSurface
+          ? f[sl.abbGhost[i]]
+          : pressureLinkValue(f, layout, porosity, i),
             abbPatch_[i]
         );
     }
@@ -930,9 +951,15 @@ void Foam::lbmBoundaries::wallMomentum
         const labelVector& cq = c[q];
         const label x =
             s + cq.x()*stride.x() + cq.y()*stride.y() + cq.z()*stride.z();
+        if (freeSurface && freeSurface->gas(x))
+        {
+            continue;
+        }
         const vector cOut(-vector(cq));
         const scalar fIn =
-            bodyLinkValue(f, layout, sl, k, porosity, g, nullptr);
+            freeSurface
+          ? f[sl.bodyGhost[k]]
+          : bodyLinkValue(f, layout, sl, k, porosity, g, nullptr);
         const vector dP = (f[sl.bodyA[k]] + fIn)*cOut;
         const vector dPrest = 2.0*w[q]*cOut;
         const point r = C[nodeCell[x]] + bodyFraction_[k]*dx*cOut;
