@@ -158,6 +158,26 @@ void Foam::latticeBoltzmannFluid::checkUnits() const
 }
 
 
+bool Foam::latticeBoltzmannFluid::besidePressurePatch(const label n) const
+{
+    const labelList& nodes = boundaries_->pressureLinkNodes();
+    const List<labelVector>& c = velocitySet_->c();
+    const labelVector& stride = lattice_.stride();
+    // (within two links: an instability fed by the patch's links shows
+    // first where the flow through it carries the disturbance)
+    forAll(c, q)
+    {
+        const label step =
+            c[q].x()*stride.x() + c[q].y()*stride.y() + c[q].z()*stride.z();
+        if (nodes.found(n + step) || nodes.found(n + 2*step))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
 void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
 {
     const label Q = velocitySet_->Q();
@@ -212,10 +232,30 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
             << "    - reduce deltaT in system/controlDict (lattice Mach ="
             << " U deltaT/dx sqrt(3))," << nl
             << "    - or refine the mesh, or raise nu in"
-            << " constant/fluidProperties," << nl
-            << "    - or use collisionModel regularized or MRT, or"
-            << " smagorinskyConstant 0.1." << nl
-            << exit(FatalError);
+            << " constant/fluidProperties," << nl;
+        // (the models the case does not use yet)
+        const word model = collision_->type();
+        string others;
+        for (const word m : {"regularized", "MRT", "TRT"})
+        {
+            if (m != model)
+            {
+                others += (others.empty() ? "" : " or ") + m;
+            }
+        }
+        FatalError
+            << "    - or use collisionModel " << others.c_str()
+            << (smagorinsky_ > 0 ? "." : ", or smagorinskyConstant 0.1.")
+            << nl;
+        if (!collision_->splitRelaxation() && besidePressurePatch(n))
+        {
+            FatalError
+                << "    The node is beside a pressure patch, whose links take"
+                << " its non-equilibrium part: with " << model << " near"
+                << " tau = 1/2 a flow through the patch grows from it;"
+                << " TRT and MRT hold." << nl;
+        }
+        FatalError << exit(FatalError);
     }
 
     FatalErrorInFunction
@@ -547,6 +587,27 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         )
     );
     boundaries_->report(Info);
+    if
+    (
+        units_.tau() - 0.5 < pressurePatchTauMinusHalf_
+     && returnReduce(boundaries_->pressureLinkNodes().size(), sumOp<label>())
+     && !collision_->splitRelaxation()
+    )
+    {
+        WarningInFunction
+            << "tau - 1/2 = " << units_.tau() - 0.5 << " with pressure"
+            << " patches and collisionModel " << collision_->type() << ":"
+            << " a pressure patch's links take the non-equilibrium part of"
+            << " the node beside them (Guo, Zheng & Shi 2002), which a"
+            << " collision that relaxes it at one rate turns over nearly"
+            << " whole each step near tau = 1/2, and a flow through the"
+            << " patch can grow from it (a tank filling through a patch:"
+            << " unstable at tau - 1/2 = 0.031, stable at 0.046)." << nl
+            << "    To stay stable with a flow through the patch: collisionModel"
+            << " TRT or MRT (they hold), or tau - 1/2 above "
+            << pressurePatchTauMinusHalf_ << " (tau - 1/2 = 3 nu deltaT/dx^2)."
+            << endl;
+    }
 
     initialise();
     updateFields();

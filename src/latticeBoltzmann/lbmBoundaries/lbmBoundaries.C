@@ -545,6 +545,38 @@ Foam::lbmBoundaries::lbmBoundaries
     }
     Pstream::listCombineGather(bodyLinks_, plusEqOp<label>());
     Pstream::listCombineScatter(bodyLinks_);
+    if (sum(bodyLinks_) == 0)
+    {
+        // (no interpolated link anywhere: nothing to share, no exchange)
+        bodyLinks_.clear();
+    }
+
+    // The nodes behind the links whose density the links take: owned here,
+    // or a halo image whose owner computes it (the halo carries only the
+    // populations its owned neighbours pull, not a node's density)
+    if (bodyLinks_.size())
+    {
+        const haloExchange& halo = lattice_.halo();
+        scalarList behind(nBox, Zero);
+        for (const label y : bodyBehind_)
+        {
+            if (y >= 0)
+            {
+                behind[y] = 1;
+            }
+        }
+        halo.addToOwners({haloExchange::field(behind)});
+        DynamicList<label> rhoNodes;
+        for (const label n : lattice_.cellNode())
+        {
+            if (behind[n] > 0)
+            {
+                rhoNodes.append(n);
+            }
+        }
+        behindRhoNode_.transfer(rhoNodes);
+        behindRho_.setSize(nBox, Zero);
+    }
     copySource_.transfer(copySource);
     copyValue_.transfer(copyValue);
     slipNode_.transfer(slipNode);
@@ -596,6 +628,30 @@ const Foam::lbmBoundaries::linkSlots& Foam::lbmBoundaries::slots
 }
 
 
+void Foam::lbmBoundaries::behindDensity
+(
+    const scalar* f,
+    const lbmLayout& layout
+) const
+{
+    if (bodyLinks_.empty())
+    {
+        return;
+    }
+    const label Q = vs_.Q();
+    for (const label n : behindRhoNode_)
+    {
+        scalar rho = 0;
+        for (label q = 0; q < Q; ++q)
+        {
+            rho += f[layout.at(q, n)];
+        }
+        behindRho_[n] = rho;
+    }
+    lattice_.halo().copyToHalo({haloExchange::field(behindRho_)});
+}
+
+
 inline Foam::scalar Foam::lbmBoundaries::bodyLinkValue
 (
     const scalar* f,
@@ -631,14 +687,14 @@ inline Foam::scalar Foam::lbmBoundaries::bodyLinkValue
     {
         if (!(freeSurface && freeSurface->gas(y)))
         {
+            // (y's density from behindDensity: y may be a halo node)
             const label Q = vs_.Q();
-            scalar rhoX = 0, rhoY = 0;
+            scalar rhoX = 0;
             for (label q = 0; q < Q; ++q)
             {
                 rhoX += f[layout.at(q, x)];
-                rhoY += f[layout.at(q, y)];
             }
-            in -= bodyWeightB_[k]*vs_.w()[i]*(rhoY - rhoX);
+            in -= bodyWeightB_[k]*vs_.w()[i]*(behindRho_[y] - rhoX);
         }
     }
     else if (bodyFraction_[k] >= 0.5)
@@ -721,10 +777,12 @@ void Foam::lbmBoundaries::fill
     // (Bao, Yuan & Schaefer 2008, J. Comput. Phys. 227, 8472, correct it
     // at each node.) Here each body's imbalance over all its links is
     // shared equally by its links' nodes, in their rest populations
-    // (which carry no momentum), so the water's mass is exact. Given back
+    // (which carry no momentum), so the water's mass is exact to
+    // round-off. Given back
     // at each node, the node's own imbalance changed the flow near the
     // wall: Schaefer-Turek's C_L went from 0.0% to 2.7% off and C_D's
     // order from 2.4 to 1.4. (A gas node's links count for nothing.)
+    behindDensity(f, layout);
     forAll(bodyGhost_, i)
     {
         const scalar in =
@@ -737,36 +795,27 @@ void Foam::lbmBoundaries::fill
     }
     if (bodyLinks_.size())
     {
-        scalarList imbalance(bodyLinks_.size(), Zero);
+        // Per body its imbalance and its links at water nodes, summed over
+        // the processors in one reduction (the sums' order differs with
+        // the decomposition: parallel = serial to round-off)
+        const label nBodies = bodyLinks_.size();
+        scalarList sums(2*nBodies, Zero);
         forAll(bodyGhost_, i)
         {
-            imbalance[bodyOf_[i]] += bodyCorrection_[i];
+            sums[bodyOf_[i]] += bodyCorrection_[i];
+            sums[nBodies + bodyOf_[i]] +=
+                !(freeSurface && freeSurface->gas(bodyNode_[i]));
         }
-        labelList wet(bodyLinks_.size(), Zero);
-        if (freeSurface)
-        {
-            forAll(bodyGhost_, i)
-            {
-                wet[bodyOf_[i]] += !freeSurface->gas(bodyNode_[i]);
-            }
-        }
-        else
-        {
-            wet = bodyLinks_;
-        }
-        // (the bodies' sums from every processor: serial = parallel)
-        Pstream::listCombineGather(imbalance, plusEqOp<scalar>());
-        Pstream::listCombineScatter(imbalance);
-        if (freeSurface)
-        {
-            Pstream::listCombineGather(wet, plusEqOp<label>());
-            Pstream::listCombineScatter(wet);
-        }
+        Pstream::listCombineGather(sums, plusEqOp<scalar>());
+        Pstream::listCombineScatter(sums);
+        const SubList<scalar> imbalance(sums, nBodies);
+        const SubList<scalar> wet(sums, nBodies, nBodies);
         forAll(bodyGhost_, i)
         {
             const label b = bodyOf_[i];
             bodyCorrection_[i] =
-                (freeSurface && freeSurface->gas(bodyNode_[i])) || !wet[b]
+                (freeSurface && freeSurface->gas(bodyNode_[i]))
+             || !(wet[b] > 0)
               ? 0
               : imbalance[b]/wet[b];
             f[sl.bodyRest[i]] += bodyCorrection_[i];
@@ -844,6 +893,12 @@ void Foam::lbmBoundaries::wallMomentum
     const List<FixedList<label, 6>>& cellFace = lattice_.cellBoundaryFace();
     const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();
     const scalar dx = lattice_.dx();
+
+    if (!freeSurface)
+    {
+        // (the links into bodies recomputed: the densities behind them)
+        behindDensity(f, layout);
+    }
 
     P = Zero;
     M = Zero;
