@@ -699,6 +699,9 @@ inline Foam::scalar Foam::lbmBoundaries::bodyLinkValue
     }
     else if (bodyFraction_[k] >= 0.5)
     {
+        // (the water's weight is its only force where bodies are: with
+        // obstacles every effect but fluid, gravity and freeSurface is
+        // refused, see fluidEffect; a force field would belong here too)
         const vector F = porosity ? porosity[x]*g : g;
         in -= bodyWeightB_[k]*3*vs_.w()[i]*(vector(vs_.c()[vs_.opp()[i]]) & F);
     }
