@@ -116,9 +116,17 @@ void Foam::physicsScene::progress()
     const scalar wall = start_.elapsed();
     const Time& runTime = runTime_;
 
+    if (nSteps_ == 1)
+    {
+        firstStepWall_ = wall;
+    }
+    const scalar stepsWall = wall - firstStepWall_;
+
     // Decided on wall clocks that differ between processors: agree, since
-    // the report below is collective
-    bool first = !projected_ && (wall > 2.0 || nSteps_ >= 50);
+    // the report below is collective. Projected from the steps after the
+    // first, over 50 of them or 2 s
+    bool first =
+        !projected_ && nSteps_ > 1 && (stepsWall > 2.0 || nSteps_ > 50);
     bool due = scalar(lastProgress_.elapsed()) >= progressInterval_;
     const bool last = (nSteps_ == nStepsTotal_);
     reduce(first, orOp<bool>());
@@ -135,9 +143,12 @@ void Foam::physicsScene::progress()
     if (first)
     {
         projected_ = true;
-        Info<< "Projected wall time " << perStep*nStepsTotal_ << " s for "
-            << nStepsTotal_ << " steps (" << perStep << " s per step,"
-            << " measured over " << nSteps_ << " steps)" << nl << endl;
+        const scalar perLaterStep = stepsWall/(nSteps_ - 1);
+        Info<< "Projected wall time "
+            << firstStepWall_ + perLaterStep*(nStepsTotal_ - 1) << " s for "
+            << nStepsTotal_ << " steps (" << perLaterStep << " s per step,"
+            << " measured over " << nSteps_ - 1 << " steps after the first,"
+            << " which took " << firstStepWall_ << " s)" << nl << endl;
     }
 
     if (due || last)
@@ -202,7 +213,8 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
     progressInterval_(dict_.getOrDefault<scalar>("progressInterval", 10)),
     nSteps_(0),
     nStepsTotal_(0),
-    projected_(false)
+    projected_(false),
+    firstStepWall_(0)
 {
     if (names_.empty())
     {

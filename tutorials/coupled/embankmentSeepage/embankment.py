@@ -28,9 +28,12 @@
 #       piezometers 1 cm above the floor: their head p/(rho g) + y against
 #       the phreatic line's height above them (Dupuit's assumption:
 #       vertical equipotentials, the head is the height of the water).
+#     - with material points (Allrun -soil): the embankment's largest
+#       displacement and plastic strain, and its vertical effective stress.
 #     --png: the water (alpha.water) with the phreatic line, the Darcy
 #     velocity in the embankment, q/k against time (sections and meters),
-#     the piezometric heads against time.
+#     the piezometric heads against time; with material points the sand's
+#     vertical effective stress too.
 #------------------------------------------------------------------------------
 import os
 import re
@@ -83,6 +86,11 @@ def read(case):
         a = lat.grid(foamio.read(case, t, 'alpha.water'))[:, :, 0]
         U = lat.grid(np.asarray(foamio.read(case, t, 'U'))[:, 0])[:, :, 0]
         rho = lat.grid(foamio.read(case, t, 'rho'))[:, :, 0]
+        if os.path.exists(os.path.join(case, t, 'soilFraction')):
+            # (Allrun -soil: rho is the water's mass per mixture volume,
+            # n times the pore water's density)
+            n = 1 - lat.grid(foamio.read(case, t, 'soilFraction'))[:, :, 0]
+            rho = rho / np.where(n > 0, n, 1)
         q = (rho * U * a).sum(axis=1) * lat.dx / (RHO * k)
         h1 = a[up, :].sum(axis=1).mean() * lat.dx
         rows.append((float(t), q[cols], h1))
@@ -178,11 +186,29 @@ def main():
                   'the phreatic line %.4f m above the floor (%+.1f%%)'
                   % (xs, piezo[-1, 0], piezo[-1, 1 + i], h,
                      100 * (piezo[-1, 1 + i] / h - 1)))
+    sand = soil(case, ts)
+    if sand is not None:
+        X0, X, s, ep = sand
+        d = np.linalg.norm(X - X0, axis=1)
+        i = int(np.argmax(d))
+        print('embankment: the sand (%d points): largest displacement %.2e m at '
+              '(%.2f, %.2f) m, plastic strain up to %.2e (%d points yielded)'
+              % (len(d), d[i], X0[i, 0], X0[i, 1], ep.max(), int((ep > 1e-6).sum())))
     if png:
-        plot(case, lat, ts, rows, a, qC, png, flow, piezo)
+        plot(case, lat, ts, rows, a, qC, png, flow, piezo, sand)
 
 
-def plot(case, lat, ts, rows, a, qC, png, flow, piezo):
+def soil(case, ts):
+    """The material points at the start and the last time (Allrun -soil):
+    start positions, positions, stress, plastic strain; None without them"""
+    if not os.path.isdir(os.path.join(case, ts[-1], 'lagrangian', 'materialPoints')):
+        return None
+    return (foamio.read_cloud(case, ts[0], 'x'), foamio.read_cloud(case, ts[-1], 'x'),
+            foamio.read_cloud(case, ts[-1], 'stress'),
+            foamio.read_cloud(case, ts[-1], 'plasticStrain'))
+
+
+def plot(case, lat, ts, rows, a, qC, png, flow, piezo, sand=None):
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
@@ -191,8 +217,12 @@ def plot(case, lat, ts, rows, a, qC, png, flow, piezo):
     U = np.asarray(foamio.read(case, ts[-1], 'U'))
     Ux = lat.grid(U[:, 0])[:, :, 0]
     Uy = lat.grid(U[:, 1])[:, :, 0]
-    fig, (ax, bx, cx) = plt.subplots(3, 1, figsize=(9, 10.2),
-                                     gridspec_kw={'height_ratios': [1.25, 1, 1]})
+    if sand is None:
+        fig, (ax, bx, cx) = plt.subplots(3, 1, figsize=(9, 10.2),
+                                         gridspec_kw={'height_ratios': [1.25, 1, 1]})
+    else:
+        fig, (ax, sx, bx, cx) = plt.subplots(
+            4, 1, figsize=(9, 13.6), gridspec_kw={'height_ratios': [1.25, 1.25, 1, 1]})
     edges_x = np.append(x - 0.5 * dx, x[-1] + 0.5 * dx)
     edges_y = np.append(y - 0.5 * dx, y[-1] + 0.5 * dx)
     from matplotlib.colors import LinearSegmentedColormap
@@ -218,9 +248,24 @@ def plot(case, lat, ts, rows, a, qC, png, flow, piezo):
     ax.set_aspect('equal')
     ax.set_xlabel('x [m]')
     ax.set_ylabel('y [m]')
-    ax.set_title('Seepage through a sand embankment at t = %s s' % ts[-1])
+    ax.set_title('Seepage through a sand embankment at t = %g s' % float(ts[-1]))
     ax.legend(loc='upper right', fontsize=7)
     fig.colorbar(m, ax=ax, label='alpha.water', shrink=0.7, ticks=[0, 0.5, 1])
+    if sand is not None:
+        X0, Xs, st, ep = sand
+        sc = sx.scatter(Xs[:, 0], Xs[:, 1], c=-st[:, 3] / 1e3, s=3, cmap='viridis',
+                        vmin=0, linewidths=0)
+        sx.contour(x, y, a.T, levels=[0.5], colors='k', linewidths=1.2)
+        sx.plot([], [], 'k', lw=1.2, label='water surface, phreatic line')
+        sx.set_xlim(edges_x[0], edges_x[-1])
+        sx.set_ylim(edges_y[0], edges_y[-1])
+        sx.set_aspect('equal')
+        sx.set_xlabel('x [m]')
+        sx.set_ylabel('y [m]')
+        sx.set_title("The sand's material points: vertical effective stress at t = %g s"
+                     % float(ts[-1]))
+        sx.legend(loc='upper right', fontsize=7)
+        fig.colorbar(sc, ax=sx, label="-sigma'_yy [kPa]", shrink=0.7)
     t = np.array([r[0] for r in rows])
     q = np.array([r[1] for r in rows])
     for i, xs in enumerate(SECTIONS):
@@ -246,7 +291,7 @@ def plot(case, lat, ts, rows, a, qC, png, flow, piezo):
         h = a[int(np.argmin(abs(x - xs))), :].sum() * dx
         cx.axhline(h, color=colours[i], ls='--', lw=0.8)
     cx.plot([], [], 'k--', lw=0.8, label='the phreatic line\'s height there '
-            'at t = %s s (Dupuit)' % ts[-1])
+            'at t = %g s (Dupuit)' % float(ts[-1]))
     cx.set_xlabel('t [s]')
     cx.set_ylabel('head p/(rho g) + y [m]')
     cx.set_ylim(0, HEIGHT)
