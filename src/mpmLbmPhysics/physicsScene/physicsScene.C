@@ -137,16 +137,17 @@ void Foam::physicsScene::progress()
         return;
     }
 
-    const scalar perStep = wall/max(nSteps_, label(1));
+    // The remaining steps at the pace of those after the first
+    const scalar perStep =
+        nSteps_ > 1 ? stepsWall/(nSteps_ - 1) : wall/max(nSteps_, label(1));
     const scalar eta = perStep*max(nStepsTotal_ - nSteps_, label(0));
 
     if (first)
     {
         projected_ = true;
-        const scalar perLaterStep = stepsWall/(nSteps_ - 1);
         Info<< "Projected wall time "
-            << firstStepWall_ + perLaterStep*(nStepsTotal_ - 1) << " s for "
-            << nStepsTotal_ << " steps (" << perLaterStep << " s per step,"
+            << firstStepWall_ + perStep*(nStepsTotal_ - 1) << " s for "
+            << nStepsTotal_ << " steps (" << perStep << " s per step,"
             << " measured over " << nSteps_ - 1 << " steps after the first,"
             << " which took " << firstStepWall_ << " s)" << nl << endl;
     }
