@@ -129,6 +129,12 @@ void Foam::latticeBoltzmannFluid::setPorosity
     {
         porosity_[n] = eps[n];
     }
+    // The halo's too: the free surface reads its neighbours' porosity (a
+    // node that turns from gas to interface starts at the mean pore
+    // density of its water neighbours; with the halo's porosity left from
+    // the start, a node at a processor boundary started at another density
+    // than serially, 1.4e-4 of its fill level in a dam of material points)
+    halo_.exchange(porosity_.data(), 1, lattice_.nBox());
     if (freeSurface_ && storageFollowsPorosity_)
     {
         // The free surface's storage: the porosity whose water the
