@@ -68,6 +68,9 @@ def casagrande(H):
 
 def read(case):
     ts = foamio.times(case)
+    if len(ts) < 2:
+        raise SystemExit('embankment.py: no time written after the start in %s '
+                         '(writeInterval in system/controlDict beyond endTime?)' % case)
     C = None
     for t in reversed(ts):
         if os.path.exists(os.path.join(case, t, 'C')):
