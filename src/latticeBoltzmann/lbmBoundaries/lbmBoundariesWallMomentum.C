@@ -55,6 +55,16 @@ void Foam::lbmBoundaries::wallMomentum
     Prest = Zero;
     Mrest = Zero;
 
+    // A link's wall slot (direction q at node s beyond the wall): its
+    // direction and the water node x it leaves
+    auto linkNode = [&](const label ghost, label& q)
+    {
+        q = ghost/nBox;
+        const label s = ghost - q*nBox;
+        const labelVector& cq = c[q];
+        return s + cq.x()*stride.x() + cq.y()*stride.y() + cq.z()*stride.z();
+    };
+
     // One link: the wall slot (direction q, node s beyond the wall), the
     // population fIn it holds, the patch of the face it crosses. A link
     // across an edge or a corner crosses a face in each axis it leaves
@@ -65,11 +75,9 @@ void Foam::lbmBoundaries::wallMomentum
     // (the shear on it)
     auto add = [&](const label ghost, const scalar fIn, const label patchi)
     {
-        const label q = ghost/nBox;
-        const label s = ghost - q*nBox;
+        label q;
+        const label x = linkNode(ghost, q);
         const labelVector& cq = c[q];
-        const label x =
-            s + cq.x()*stride.x() + cq.y()*stride.y() + cq.z()*stride.z();
         if (freeSurface && freeSurface->gas(x))
         {
             return;
@@ -150,12 +158,9 @@ void Foam::lbmBoundaries::wallMomentum
         {
             continue;
         }
-        const label ghost = bodyGhost_[k];
-        const label q = ghost/nBox;
-        const label s = ghost - q*nBox;
+        label q;
+        const label x = linkNode(bodyGhost_[k], q);
         const labelVector& cq = c[q];
-        const label x =
-            s + cq.x()*stride.x() + cq.y()*stride.y() + cq.z()*stride.z();
         if (freeSurface && freeSurface->gas(x))
         {
             continue;
