@@ -150,6 +150,8 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     momentumStale_(true),
     halo_(lattice.halo()),
     restarted_(false),
+    hydrostaticGradient_(Zero),
+    hydrostaticRef_(Zero),
     porosityInitialised_(false),
     storageFollowsPorosity_(true),
     displacedMass_(0),
@@ -474,7 +476,7 @@ void Foam::latticeBoltzmannFluid::enableGivenDrag()
 
 Foam::vector Foam::latticeBoltzmannFluid::nodeForce(const label n) const
 {
-    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+    const vector g = latticeAcceleration();
     // (the water's weight, rho_0 g: lbmKernel.H)
     if (Fx_.empty())
     {
@@ -530,7 +532,7 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         freeSurface_->reconstruct
         (
             f.data(),
-            units_.accelerationToLattice(bodyAcceleration_)
+            latticeAcceleration()
         );
     }
     boundaries_->fill
@@ -539,7 +541,7 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         layout_,
         porosity_.size() ? porosity_.cdata() : nullptr,
         freeSurface_.get(),
-        units_.accelerationToLattice(bodyAcceleration_)
+        latticeAcceleration()
     );
     if (freeSurface_)
     {
@@ -552,7 +554,7 @@ void Foam::latticeBoltzmannFluid::prepareStream()
         (
             f.data(),
             boundaries_(),
-            units_.accelerationToLattice(bodyAcceleration_)
+            latticeAcceleration()
         );
     }
     prepared_ = true;
@@ -584,7 +586,7 @@ void Foam::latticeBoltzmannFluid::streamedState
         p += f[layout_.at(q, n)]*cq;
     }
     const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
-    Fo = eps*units_.accelerationToLattice(bodyAcceleration_);
+    Fo = eps*latticeAcceleration();
     if (Fx_.size())
     {
         Fo += vector(Fx_[n], Fy_[n], Fz_[n]);
@@ -619,7 +621,7 @@ void Foam::latticeBoltzmannFluid::step()
         freeSurface_ ? freeSurface_->runs() : obstacles_->runs();
     a.runs = reinterpret_cast<const label (*)[2]>(runs.cdata());
     a.nRuns = runs.size();
-    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+    const vector g = latticeAcceleration();
     a.g[0] = g.x();
     a.g[1] = g.y();
     a.g[2] = g.z();
@@ -756,14 +758,14 @@ void Foam::latticeBoltzmannFluid::startAtForceBalance()
     // equilibrium from U carry rho U only, and would start with a jolt of
     // F/2 (large where the porosity jumps): add it, as the first-order
     // Hermite term w_q 3 c_q.F/2 (no mass)
-    if (Fx_.empty() && mag(bodyAcceleration_) == 0)
+    if (Fx_.empty() && mag(latticeAcceleration()) == 0)
     {
         return;
     }
     const label Q = velocitySet_->Q();
     const List<labelVector>& c = velocitySet_->c();
     const scalarList& w = velocitySet_->w();
-    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+    const vector g = latticeAcceleration();
     scalarList& f = current();
     momentumStale_ = true;
     for (const label n : lattice_.cellNode())

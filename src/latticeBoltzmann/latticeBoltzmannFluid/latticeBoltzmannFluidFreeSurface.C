@@ -112,7 +112,7 @@ void Foam::latticeBoltzmannFluid::updateInterface()
     freeSurface_->convert
     (
         f.data(),
-        units_.accelerationToLattice(bodyAcceleration_)
+        latticeAcceleration()
     );
 }
 

@@ -32,7 +32,7 @@ Foam::scalar Foam::latticeBoltzmannFluid::nodePressure(const label n) const
         rho += f[layout_.at(q, n)];
     }
     const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
-    return units_.pressure(rho)/eps;
+    return units_.pressure(rho)/eps + hydrostaticPressure(n);
 }
 
 
@@ -51,7 +51,7 @@ void Foam::latticeBoltzmannFluid::wallForce
     // exchanges the same values again
     scalarList& f = current();
     exchangeHalo(f.data());
-    const vector g = units_.accelerationToLattice(bodyAcceleration_);
+    const vector g = latticeAcceleration();
     const scalar* porosity = porosity_.size() ? porosity_.cdata() : nullptr;
     if (freeSurface_)
     {
@@ -117,7 +117,7 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
         freeSurface_->reconstruct
         (
             scratch_.data(),
-            units_.accelerationToLattice(bodyAcceleration_),
+            latticeAcceleration(),
             false
         );
     }
@@ -127,7 +127,7 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
         layout_,
         porosity_.size() ? porosity_.cdata() : nullptr,
         freeSurface_.get(),
-        units_.accelerationToLattice(bodyAcceleration_)
+        latticeAcceleration()
     );
     if (freeSurface_)
     {
@@ -135,7 +135,7 @@ void Foam::latticeBoltzmannFluid::viscousStress(List<symmTensor>& sigma)
         (
             scratch_.data(),
             boundaries_(),
-            units_.accelerationToLattice(bodyAcceleration_),
+            latticeAcceleration(),
             false
         );
     }
@@ -288,7 +288,7 @@ void Foam::latticeBoltzmannFluid::updateFields()
         const vector F = nodeForce(n);
         const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
         U[celli] = units_.toPhysical((j - 0.5*F)/rho);
-        p[celli] = units_.pressure(rho)/eps;
+        p[celli] = units_.pressure(rho)/eps + hydrostaticPressure(n);
         rhoPhys[celli] = (rho - (1 - eps))*units_.rho0();
     }
 

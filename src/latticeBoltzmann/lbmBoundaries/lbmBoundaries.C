@@ -294,6 +294,8 @@ Foam::lbmBoundaries::lbmBoundaries
 :
     lattice_(lattice),
     vs_(vs),
+    hydroRhoGrad_(Zero),
+    hydroRef_(Zero),
     gasPressure_(-GREAT),
     nUnclassified_(0)
 {

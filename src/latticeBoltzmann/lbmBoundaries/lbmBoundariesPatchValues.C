@@ -16,6 +16,7 @@ License
 // time (Function1 patches, outlets that let waves leave)
 
 #include "lbmBoundaries.H"
+#include "IFstream.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -265,6 +266,54 @@ void Foam::lbmBoundaries::setGasPressure
 }
 
 
+void Foam::lbmBoundaries::setHydrostatic
+(
+    const vector& gradP,
+    const point& ref,
+    const volScalarField& p,
+    const lbmUnits& units
+)
+{
+    if (hasAbsorbing())
+    {
+        forAll(absorbing_, patchi)
+        {
+            if (absorbing_[patchi])
+            {
+                IFstream is(p.objectPath());
+                const dictionary d(is);
+                FatalIOErrorInFunction
+                (
+                    d.subDict("boundaryField")
+                        .subDict(p.boundaryField()[patchi].patch().name())
+                )
+                    << "Patch " << p.boundaryField()[patchi].patch().name()
+                    << ": p advective (an outlet that lets waves leave) with"
+                    << " the hydrostatic pressure off the lattice (buoyancy's"
+                    << " hydrostatic analytic, the default): its fieldInf is"
+                    << " one value for the whole patch." << nl
+                    << "    Use a fixedValue or uniformFixedValue pressure"
+                    << " there, or buoyancyCoeffs { hydrostatic lattice; } in"
+                    << " constant/physicsProperties" << exit(FatalIOError);
+            }
+        }
+    }
+    // (sampled where each link crosses its patch as the patch value is:
+    // crossingValue is linear in the value without a free surface)
+    hydroRhoGrad_ = (units.rhoLattice(1) - 1)*gradP;
+    hydroRef_ = ref;
+    const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();
+    abbHydro_.setSize(abbRho_.size());
+    forAll(abbHydro_, i)
+    {
+        const label patchi = abbPatch_[i];
+        const scalarField ph(gradP & (patches[patchi].faceCentres() - ref));
+        abbHydro_[i] = units.rhoLattice(crossingValue(ph, abbFaces_[i])) - 1;
+        abbRho_[i] -= abbHydro_[i];
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::lbmBoundaries::update
@@ -308,6 +357,10 @@ void Foam::lbmBoundaries::update
         (
             crossingValue(p.boundaryField()[varyingAbbPatch_[k]], abbFaces_[i])
         );
+        if (abbHydro_.size())
+        {
+            abbRho_[i] -= abbHydro_[i];
+        }
     }
 
     // Outlets that let waves leave: the boundary density advected out at

@@ -113,6 +113,12 @@ void Foam::lbmBoundaries::wallMomentum
         if (any)
         {
             const point r = C[nodeCell[x]] - 0.5*dx*vector(cq);
+            // (the hydrostatic pressure the lattice does not carry, at its
+            // value where the link meets the wall, on the pore water's
+            // share of it as the lattice's own pressure: zero unless set)
+            dP +=
+                (porosity ? porosity[x] : 1.0)
+               *(hydroRhoGrad_ & (r - hydroRef_))*dPrest;
             P += dP;
             M += (r - CofR) ^ dP;
             Prest += dPrest;
@@ -170,9 +176,12 @@ void Foam::lbmBoundaries::wallMomentum
             freeSurface
           ? f[sl.bodyGhost[k]]
           : bodyLinkValue(f, layout, sl, k, porosity, g, nullptr);
-        const vector dP = (f[sl.bodyA[k]] + fIn)*cOut;
         const vector dPrest = 2.0*w[q]*cOut;
         const point r = C[nodeCell[x]] + bodyFraction_[k]*dx*cOut;
+        const vector dP =
+            (f[sl.bodyA[k]] + fIn)*cOut
+          + (porosity ? porosity[x] : 1.0)
+           *(hydroRhoGrad_ & (r - hydroRef_))*dPrest;
         P += dP;
         M += (r - CofR) ^ dP;
         Prest += dPrest;

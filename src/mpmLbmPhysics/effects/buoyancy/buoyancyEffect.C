@@ -23,6 +23,8 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "addToMemberFunctionSelectionTable.H"
 #include "volFields.H"
+#include "IFstream.H"
+#include "OFstream.H"
 
 namespace Foam
 {
@@ -44,7 +46,9 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     soil_(scene.effect<physicsEffects::soil>("soil").mpm()),
     addedWaterForce_(nullptr),
     maxForce_(0),
-    warm_(false)
+    warm_(false),
+    analytic_(!scene.has("freeSurface")),
+    started_(false)
 {
     if (!scene.effect<physicsEffects::drag>("drag").twoWay())
     {
@@ -65,6 +69,69 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
             << " porosity on the lattice), not a fixed medium"
             << exit(FatalError);
     }
+
+    // Who carries the hydrostatic pressure: the lattice, or (the default
+    // without a free surface) the analytic rho_w g.(x - x_top)
+    if (scene.dict().found("buoyancyCoeffs"))
+    {
+        const dictionary& coeffs = scene.dict().subDict("buoyancyCoeffs");
+        const word mode(coeffs.getOrDefault<word>("hydrostatic", "default"));
+        if (mode == "lattice")
+        {
+            analytic_ = false;
+        }
+        else if (mode == "analytic")
+        {
+            if (scene.has("freeSurface"))
+            {
+                FatalIOErrorInFunction(coeffs)
+                    << "hydrostatic analytic is not allowed with freeSurface:"
+                    << " the gas's pressure at the surface is set on the"
+                    << " lattice, which must carry the whole pressure."
+                    << " Use hydrostatic lattice (the default with a free"
+                    << " surface)" << exit(FatalIOError);
+            }
+            analytic_ = true;
+        }
+        else if (mode != "default")
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "hydrostatic " << mode << " is not allowed: choose one of"
+                << " (analytic lattice)" << exit(FatalIOError);
+        }
+    }
+
+    // A restart continues in the mode its populations were written with
+    // (a time without buoyancyState: the lattice carried the whole
+    // pressure, as every run did before the analytic mode)
+    if (fluid_.restarted())
+    {
+        const fileName statePath
+        (
+            scene.mesh().time().timePath()/"uniform"/"buoyancyState"
+        );
+        word written("lattice");
+        if (isFile(statePath))
+        {
+            IFstream is(statePath);
+            written = dictionary(is).get<word>("hydrostatic");
+        }
+        const word mode(analytic_ ? "analytic" : "lattice");
+        if (written != mode)
+        {
+            FatalIOErrorInFunction(scene.dict())
+                << "The water's populations in " << scene.mesh().time()
+                    .timePath()
+                << " were written with buoyancy's hydrostatic " << written
+                << " (" << statePath.name() << " in uniform/"
+                << (isFile(statePath) ? "" : ": none, as before that mode")
+                << "); this run has hydrostatic " << mode << "." << nl
+                << "    Continue that run with buoyancyCoeffs { hydrostatic "
+                << written << "; } in constant/physicsProperties, or start"
+                << " from 0" << exit(FatalIOError);
+        }
+    }
+
     fluid_.enableForceField();
     const latticeMesh& lattice = fluid_.lattice();
     const label nBox = lattice.nBox();
@@ -155,7 +222,13 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     soilForce_.setSize(nBox, Zero);
 
     Info<< "Buoyancy: pore pressure on the soil -phi grad(p) and on the"
-        << " water -(1 - phi) grad(p); the soil's stress is effective" << nl;
+        << " water -(1 - phi) grad(p); the soil's stress is effective" << nl
+        << "    hydrostatic pressure "
+        << (
+               analytic_
+             ? "analytic (the lattice carries p_rgh = p - rho_w g.(x - x_top))"
+             : "on the lattice"
+           ) << nl;
 
     // The pore water stiffens the soil: under a fast load it cannot drain
     // and the skeleton's p-wave modulus M becomes Biot's undrained M + K_f/n
@@ -191,14 +264,25 @@ void Foam::physicsEffects::buoyancy::balanced
 
 void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
 {
+    if (!started_)
+    {
+        // (before the first step, after the porosity's first setting: the
+        // populations of a run from U and p then hold p_rgh)
+        started_ = true;
+        if (analytic_)
+        {
+            fluid_.useAnalyticHydrostatic();
+        }
+    }
     const latticeMesh& lattice = fluid_.lattice();
     const label Q = fluid_.velocities().Q();
     const scalarList& f = fluid_.populations();
     const lbmLayout& layout = fluid_.layout();
     const scalarList& eps = fluid_.porosity();
     const labelList& cellNode = lattice.cellNode();
-    const vector g =
-        fluid_.units().accelerationToLattice(fluid_.bodyAcceleration());
+    // (the weight the lattice applies: none with the hydrostatic pressure
+    // off the lattice)
+    const vector g = fluid_.latticeAcceleration();
 
     // Pore pressure c_s^2 (rho - 1)/n (lattice units, relative to the
     // reference) and the porosity
@@ -250,6 +334,18 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
 
     const scalar toNewton =
         lattice.cellVolume()/fluid_.units().forceDensityToLattice();
+    // The hydrostatic pressure off the lattice: its force on a node's
+    // solid, -phi grad(p_h) V = -phi rho_w g V (Archimedes) [N per phi]
+    const vector archimedes
+    (
+        analytic_
+      ? vector
+        (
+           -fluid_.units().rho0()*lattice.cellVolume()
+           *fluid_.bodyAcceleration()
+        )
+      : vector::zero
+    );
     soilForce_ = Zero;
     maxForce_ = 0;
     for (const label n : cellNode)
@@ -264,7 +360,8 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         if (phi > 0 && wet > 0)
         {
             soilForce_[n] =
-                (toNewton*phi*wet)*cmptMultiply(gradScale_[n], D);
+                (toNewton*phi*wet)*cmptMultiply(gradScale_[n], D)
+              + (phi*wet)*archimedes;
             maxForce_ = max(maxForce_, mag(soilForce_[n]));
         }
     }
@@ -360,6 +457,18 @@ void Foam::physicsEffects::buoyancy::write()
     // Lattice units, binary whatever the case's writeFormat (as the
     // populations): a restart continues bit for bit
     writeNodeField(fluid_.lattice(), "lbmStaticForce", applied_, dimless, true);
+
+    // Who carried the hydrostatic pressure: a restart must continue so
+    const fileName dir(scene_.mesh().time().timePath()/"uniform");
+    mkDir(dir);
+    OFstream os(dir/"buoyancyState");
+    os  << "hydrostatic " << (analytic_ ? "analytic" : "lattice") << ";" << nl
+        << "reference " << fluid_.hydrostaticReference() << ";" << nl;
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Could not write " << os.name() << exit(FatalError);
+    }
 }
 
 
