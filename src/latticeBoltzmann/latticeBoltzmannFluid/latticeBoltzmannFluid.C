@@ -152,6 +152,8 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     restarted_(false),
     hydrostaticGradient_(Zero),
     hydrostaticRef_(Zero),
+    writtenHydrostaticGradient_(Zero),
+    writtenHydrostaticRef_(Zero),
     porosityInitialised_(false),
     storageFollowsPorosity_(true),
     displacedMass_(0),
@@ -504,6 +506,10 @@ void Foam::latticeBoltzmannFluid::prepareStream()
     if (nSteps_ == 0 && !restarted_)
     {
         startAtForceBalance();
+    }
+    if (nSteps_ == 0 && restarted_)
+    {
+        checkWrittenHydrostatic();
     }
     exchangeHalo(f.data());
     if (boundaries_->timeVarying())

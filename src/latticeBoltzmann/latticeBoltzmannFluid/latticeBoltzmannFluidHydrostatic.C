@@ -15,8 +15,26 @@ License
 // p_rgh = p - rho_0 g.(x - x_top) and no weight
 
 #include "latticeBoltzmannFluid.H"
+#include "OFstream.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::latticeBoltzmannFluid::canUseAnalyticHydrostatic() const
+{
+    if (freeSurface_)
+    {
+        return false;
+    }
+    for (direction j = 0; j < 3; ++j)
+    {
+        if (lattice_.periodic()[j] && bodyAcceleration_[j] != 0)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
 
 void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
 {
@@ -24,11 +42,11 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
     {
         return;
     }
-    if (freeSurface_)
+    if (!canUseAnalyticHydrostatic())
     {
         FatalErrorInFunction
             << "the hydrostatic pressure cannot leave the lattice with a"
-            << " free surface (its gas pressure is set on the lattice)"
+            << " free surface or with g along a periodic direction"
             << abort(FatalError);
     }
     if (nSteps_ > 0)
@@ -56,6 +74,8 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
         hydrostatic_[cellNode[celli]] =
             hydrostaticGradient_ & (C[celli] - hydrostaticRef_);
     }
+    // (with no weight at all, p_h = 0: the lattice carries p as before,
+    // the mode recorded for a restart)
     boundaries_->setHydrostatic
     (
         hydrostaticGradient_, hydrostaticRef_, p_, units_
@@ -66,10 +86,6 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
         // A run from U and p: its populations (at the equilibrium of the
         // pore pressure p and the superficial velocity U, setPorosity) now
         // hold p - p_h: the lattice density falls by n (rho(p_h) - 1)
-        const label Q = velocitySet_->Q();
-        const List<labelVector>& c = velocitySet_->c();
-        const scalarList& w = velocitySet_->w();
-        scalarList& f = current();
         momentumStale_ = true;
         scalar mass = 0;
         for (const label n : cellNode)
@@ -78,24 +94,28 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
             {
                 continue;
             }
-            scalar rho = 0;
-            vector j(Zero);
-            for (label q = 0; q < Q; ++q)
-            {
-                rho += f[layout_.at(q, n)];
-                j += f[layout_.at(q, n)]*vector(c[q]);
-            }
             const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
-            const scalar rhoNew =
-                rho - eps*(units_.rhoLattice(hydrostatic_[n]) - 1);
-            const vector u = j/rho;
-            for (label q = 0; q < Q; ++q)
+            const scalar rho = setEquilibrium
+            (
+                n, eps, -eps*(units_.rhoLattice(hydrostatic_[n]) - 1), 1
+            );
+            if (!(rho > 0))
             {
-                const scalar cu = vector(c[q]) & u;
-                f[layout_.at(q, n)] =
-                    w[q]*rhoNew*(1 + 3*cu + (4.5*cu*cu - 1.5*magSqr(u))/eps);
+                const label celli = lattice_.nodeCell()[n];
+                FatalErrorInFunction
+                    << "The water's initial pressure less the hydrostatic "
+                    << units_.rho0() << " g.(x - " << hydrostaticRef_ << "),"
+                    << " which the lattice carries (buoyancy's hydrostatic"
+                    << " analytic), is " << units_.pressure(1 + (rho - 1)/eps)
+                    << " Pa at cell " << celli << " (" << C[celli] << "):"
+                    << " beyond what the lattice can hold (-rho c_s^2 = "
+                    << -units_.rho0()*sqr(units_.soundSpeed()) << " Pa)." << nl
+                    << "    Start the water from the hydrostatic pressure in"
+                    << " 0/p (setExprFields with p = rho g (h - y), as the"
+                    << " tutorials do), or smaller deltaT (a faster lattice"
+                    << " sound speed)" << exit(FatalError);
             }
-            mass += rhoNew;
+            mass += rho;
         }
         mass0_ = returnReduce(mass - displacedMass_, sumOp<scalar>());
         updateFields();
@@ -104,6 +124,72 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
     Info<< "The water's hydrostatic pressure " << units_.rho0() << " g.(x - "
         << hydrostaticRef_ << ") is off the lattice: it carries p_rgh and no"
         << " weight" << nl << endl;
+}
+
+
+void Foam::latticeBoltzmannFluid::checkWrittenHydrostatic() const
+{
+    const word mode(hydrostatic_.size() ? "analytic" : "lattice");
+    const fileName& file = writtenHydrostaticFile_;
+    if (writtenHydrostatic_ != mode)
+    {
+        FatalErrorInFunction
+            << "The water's populations in " << file.path().path()
+            << " were written with the hydrostatic pressure "
+            << (
+                   writtenHydrostatic_ == "analytic"
+                 ? "off the lattice (buoyancy's hydrostatic analytic: they"
+                   " hold p_rgh)"
+                 : "on the lattice"
+               )
+            << " (" << file
+            << (isFile(file) ? "" : ": none, as before that mode") << ");"
+            << " this run carries it "
+            << (mode == "analytic" ? "off the lattice" : "on the lattice")
+            << "." << nl
+            << "    Continue that run with the effects and buoyancyCoeffs"
+            << " { hydrostatic " << writtenHydrostatic_ << "; } it had, or"
+            << " start from 0" << exit(FatalError);
+    }
+    if
+    (
+        mode == "analytic"
+     && (
+            mag(writtenHydrostaticGradient_ - hydrostaticGradient_)
+          > 1e-12*mag(hydrostaticGradient_)
+         || mag(writtenHydrostaticRef_ - hydrostaticRef_)
+          > 1e-9*max(mag(hydrostaticRef_), lattice_.dx())
+        )
+    )
+    {
+        FatalErrorInFunction
+            << "The water's populations in " << file.path().path()
+            << " hold p_rgh = p - " << writtenHydrostaticGradient_ << ".(x - "
+            << writtenHydrostaticRef_ << ") (" << file << "); this run's"
+            << " hydrostatic pressure is " << hydrostaticGradient_ << ".(x - "
+            << hydrostaticRef_ << "): constant/g, rho or the mesh changed"
+            << " since." << nl
+            << "    Restart with the g, rho and mesh of that run, or start"
+            << " from 0" << exit(FatalError);
+    }
+}
+
+
+void Foam::latticeBoltzmannFluid::writeHydrostaticState() const
+{
+    const fileName dir(mesh_.time().timePath()/"uniform");
+    mkDir(dir);
+    OFstream os(dir/"lbmHydrostatic");
+    os.precision(17);
+    os  << "hydrostatic " << (hydrostatic_.size() ? "analytic" : "lattice")
+        << ";" << nl
+        << "gradient " << hydrostaticGradient_ << ";" << nl
+        << "reference " << hydrostaticRef_ << ";" << nl;
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Could not write " << os.name() << exit(FatalError);
+    }
 }
 
 

@@ -95,6 +95,20 @@ void Foam::latticeBoltzmannFluid::initialise()
             );
         }
 
+        // How the populations carry the hydrostatic pressure (checked at
+        // the first step, when every effect has said how this run does)
+        writtenHydrostatic_ = "lattice";
+        writtenHydrostaticFile_ =
+            runTime.timePath()/"uniform"/"lbmHydrostatic";
+        if (isFile(writtenHydrostaticFile_))
+        {
+            IFstream is(writtenHydrostaticFile_);
+            const dictionary state(is);
+            writtenHydrostatic_ = state.get<word>("hydrostatic");
+            writtenHydrostaticGradient_ = state.get<vector>("gradient");
+            writtenHydrostaticRef_ = state.get<point>("reference");
+        }
+
         // Porous flow: the porosity the populations were made with
         if (foundNodeField(lattice_, "lbmPorosity"))
         {

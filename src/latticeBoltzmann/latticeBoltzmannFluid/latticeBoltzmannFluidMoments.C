@@ -440,6 +440,7 @@ void Foam::latticeBoltzmannFluid::writePopulations() const
         }
         writeNodeField(lattice_, "lbmF" + Foam::name(q), fq.cdata());
     }
+    writeHydrostaticState();
 
     if (displacement_)
     {

@@ -16,6 +16,39 @@ License
 
 #include "latticeBoltzmannFluid.H"
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::latticeBoltzmannFluid::setEquilibrium
+(
+    const label n,
+    const scalar eps,
+    const scalar rhoShift,
+    const scalar rhoScale
+)
+{
+    const label Q = velocitySet_->Q();
+    const List<labelVector>& c = velocitySet_->c();
+    const scalarList& w = velocitySet_->w();
+    scalarList& f = current();
+    scalar rhoHeld = 0;
+    vector j(Zero);
+    for (label q = 0; q < Q; ++q)
+    {
+        rhoHeld += f[layout_.at(q, n)];
+        j += f[layout_.at(q, n)]*vector(c[q]);
+    }
+    const scalar rho = rhoShift + rhoScale*rhoHeld;
+    const vector u = j/rhoHeld;
+    for (label q = 0; q < Q; ++q)
+    {
+        const scalar cu = vector(c[q]) & u;
+        f[layout_.at(q, n)] =
+            w[q]*rho*(1 + 3*cu + (4.5*cu*cu - 1.5*magSqr(u))/eps);
+    }
+    return rho;
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::latticeBoltzmannFluid::enablePorosity()
@@ -160,32 +193,14 @@ void Foam::latticeBoltzmannFluid::setPorosity
     // the initial p is 1 + eps (rho(p) - 1); the velocity is superficial.
     // (From the populations, which hold rho(p) and U at equilibrium: the
     // fields have been rewritten with Guo's velocity since.)
-    const label Q = velocitySet_->Q();
-    const List<labelVector>& c = velocitySet_->c();
-    const scalarList& w = velocitySet_->w();
-    scalarList& f = current();
     momentumStale_ = true;
     scalar mass = 0;
     for (const label n : lattice_.cellNode())
     {
-        scalar rhoP = 0;
-        vector j(Zero);
-        for (label q = 0; q < Q; ++q)
-        {
-            rhoP += f[layout_.at(q, n)];
-            j += f[layout_.at(q, n)]*vector(c[q]);
-        }
         const scalar eps = porosity_[n];
-        const scalar rho = 1 + eps*(rhoP - 1);
-        const vector u = j/rhoP;
-        for (label q = 0; q < Q; ++q)
-        {
-            const scalar cu = vector(c[q]) & u;
-            f[layout_.at(q, n)] =
-                w[q]*rho*(1 + 3*cu + (4.5*cu*cu - 1.5*magSqr(u))/eps);
-        }
-        mass += rho;
+        mass += setEquilibrium(n, eps, 1 - eps, eps);
     }
+    scalarList& f = current();
     if (freeSurface_)
     {
         // (the water in the pores: each node's share of it as its fill

@@ -303,12 +303,17 @@ void Foam::lbmBoundaries::setHydrostatic
     hydroRhoGrad_ = (units.rhoLattice(1) - 1)*gradP;
     hydroRef_ = ref;
     const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();
+    List<scalarField> ph(patches.size());
     abbHydro_.setSize(abbRho_.size());
     forAll(abbHydro_, i)
     {
         const label patchi = abbPatch_[i];
-        const scalarField ph(gradP & (patches[patchi].faceCentres() - ref));
-        abbHydro_[i] = units.rhoLattice(crossingValue(ph, abbFaces_[i])) - 1;
+        if (ph[patchi].empty())
+        {
+            ph[patchi] = gradP & (patches[patchi].faceCentres() - ref);
+        }
+        abbHydro_[i] =
+            units.rhoLattice(crossingValue(ph[patchi], abbFaces_[i])) - 1;
         abbRho_[i] -= abbHydro_[i];
     }
 }

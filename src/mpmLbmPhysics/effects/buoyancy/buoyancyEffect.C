@@ -23,8 +23,6 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "addToMemberFunctionSelectionTable.H"
 #include "volFields.H"
-#include "IFstream.H"
-#include "OFstream.H"
 
 namespace Foam
 {
@@ -47,7 +45,8 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     addedWaterForce_(nullptr),
     maxForce_(0),
     warm_(false),
-    analytic_(!scene.has("freeSurface")),
+    requested_("default"),
+    analytic_(false),
     started_(false)
 {
     if (!scene.effect<physicsEffects::drag>("drag").twoWay())
@@ -71,64 +70,31 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     }
 
     // Who carries the hydrostatic pressure: the lattice, or (the default
-    // without a free surface) the analytic rho_w g.(x - x_top)
+    // where it can: no free surface, g along no periodic direction) the
+    // analytic rho_w g.(x - x_top); decided at the first step, when gravity
+    // has been set
     if (scene.dict().found("buoyancyCoeffs"))
     {
         const dictionary& coeffs = scene.dict().subDict("buoyancyCoeffs");
-        const word mode(coeffs.getOrDefault<word>("hydrostatic", "default"));
-        if (mode == "lattice")
-        {
-            analytic_ = false;
-        }
-        else if (mode == "analytic")
-        {
-            if (scene.has("freeSurface"))
-            {
-                FatalIOErrorInFunction(coeffs)
-                    << "hydrostatic analytic is not allowed with freeSurface:"
-                    << " the gas's pressure at the surface is set on the"
-                    << " lattice, which must carry the whole pressure."
-                    << " Use hydrostatic lattice (the default with a free"
-                    << " surface)" << exit(FatalIOError);
-            }
-            analytic_ = true;
-        }
-        else if (mode != "default")
+        requested_ = coeffs.getOrDefault<word>("hydrostatic", "default");
+        if
+        (
+            requested_ != "default" && requested_ != "analytic"
+         && requested_ != "lattice"
+        )
         {
             FatalIOErrorInFunction(coeffs)
-                << "hydrostatic " << mode << " is not allowed: choose one of"
-                << " (analytic lattice)" << exit(FatalIOError);
+                << "hydrostatic " << requested_ << " is not allowed: choose"
+                << " one of (analytic lattice)" << exit(FatalIOError);
         }
-    }
-
-    // A restart continues in the mode its populations were written with
-    // (a time without buoyancyState: the lattice carried the whole
-    // pressure, as every run did before the analytic mode)
-    if (fluid_.restarted())
-    {
-        const fileName statePath
-        (
-            scene.mesh().time().timePath()/"uniform"/"buoyancyState"
-        );
-        word written("lattice");
-        if (isFile(statePath))
+        if (requested_ == "analytic" && scene.has("freeSurface"))
         {
-            IFstream is(statePath);
-            written = dictionary(is).get<word>("hydrostatic");
-        }
-        const word mode(analytic_ ? "analytic" : "lattice");
-        if (written != mode)
-        {
-            FatalIOErrorInFunction(scene.dict())
-                << "The water's populations in " << scene.mesh().time()
-                    .timePath()
-                << " were written with buoyancy's hydrostatic " << written
-                << " (" << statePath.name() << " in uniform/"
-                << (isFile(statePath) ? "" : ": none, as before that mode")
-                << "); this run has hydrostatic " << mode << "." << nl
-                << "    Continue that run with buoyancyCoeffs { hydrostatic "
-                << written << "; } in constant/physicsProperties, or start"
-                << " from 0" << exit(FatalIOError);
+            FatalIOErrorInFunction(coeffs)
+                << "hydrostatic analytic is not allowed with freeSurface:"
+                << " the gas's pressure at the surface is set on the"
+                << " lattice, which must carry the whole pressure."
+                << " Use hydrostatic lattice (the default with a free"
+                << " surface)" << exit(FatalIOError);
         }
     }
 
@@ -204,7 +170,9 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
         IOobject::MUST_READ,
         IOobject::NO_WRITE
     );
-    if (io.typeHeaderOk<volVectorField>(true))
+    // (a run from U and p starts its balance afresh: a static force left
+    // in the start time may be of the other hydrostatic mode)
+    if (fluid_.restarted() && io.typeHeaderOk<volVectorField>(true))
     {
         const volVectorField Fw(io, scene.mesh());
         checkFinite(Fw.primitiveField(), Fw.objectPath(), "internalField");
@@ -222,13 +190,7 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     soilForce_.setSize(nBox, Zero);
 
     Info<< "Buoyancy: pore pressure on the soil -phi grad(p) and on the"
-        << " water -(1 - phi) grad(p); the soil's stress is effective" << nl
-        << "    hydrostatic pressure "
-        << (
-               analytic_
-             ? "analytic (the lattice carries p_rgh = p - rho_w g.(x - x_top))"
-             : "on the lattice"
-           ) << nl;
+        << " water -(1 - phi) grad(p); the soil's stress is effective" << nl;
 
     // The pore water stiffens the soil: under a fast load it cannot drain
     // and the skeleton's p-wave modulus M becomes Biot's undrained M + K_f/n
@@ -247,6 +209,52 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::physicsEffects::buoyancy::start()
+{
+    const bool can = fluid_.canUseAnalyticHydrostatic();
+    if (requested_ == "analytic" && !can)
+    {
+        FatalIOErrorInFunction(scene_.dict().subDict("buoyancyCoeffs"))
+            << "hydrostatic analytic is not allowed here: constant/g "
+            << fluid_.bodyAcceleration() << " has a component along a"
+            << " periodic direction (cyclic patches), across which the"
+            << " lattice cannot hold a pressure that grows: there the weight"
+            << " drives the flow. Use hydrostatic lattice (the default here)"
+            << exit(FatalIOError);
+    }
+    analytic_ = (requested_ == "default" ? can : requested_ == "analytic");
+
+    // A restart continues in the mode its populations were written with
+    // (a time without lbmHydrostatic: the lattice carried the whole
+    // pressure, as every run did before the analytic mode)
+    const word mode(analytic_ ? "analytic" : "lattice");
+    const word& written = fluid_.writtenHydrostatic();
+    if (fluid_.restarted() && written != mode)
+    {
+        FatalIOErrorInFunction(scene_.dict())
+            << "The water's populations in "
+            << fluid_.writtenHydrostaticFile().path().path() << " were"
+            << " written with buoyancy's hydrostatic " << written << " ("
+            << fluid_.writtenHydrostaticFile()
+            << (isFile(fluid_.writtenHydrostaticFile()) ? "" : ": none")
+            << "); this run has hydrostatic " << mode << "."
+            << nl << "    Continue that run with buoyancyCoeffs { hydrostatic "
+            << written << "; } in constant/physicsProperties, or start from 0"
+            << exit(FatalIOError);
+    }
+    if (analytic_)
+    {
+        fluid_.useAnalyticHydrostatic();
+    }
+    Info<< "Buoyancy: the hydrostatic pressure "
+        << (
+               analytic_
+             ? "analytic (the lattice carries p_rgh = p - rho_w g.(x - x_top))"
+             : "on the lattice"
+           ) << nl << endl;
+}
+
 
 void Foam::physicsEffects::buoyancy::balanced
 (
@@ -269,10 +277,7 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         // (before the first step, after the porosity's first setting: the
         // populations of a run from U and p then hold p_rgh)
         started_ = true;
-        if (analytic_)
-        {
-            fluid_.useAnalyticHydrostatic();
-        }
+        start();
     }
     const latticeMesh& lattice = fluid_.lattice();
     const label Q = fluid_.velocities().Q();
@@ -457,18 +462,6 @@ void Foam::physicsEffects::buoyancy::write()
     // Lattice units, binary whatever the case's writeFormat (as the
     // populations): a restart continues bit for bit
     writeNodeField(fluid_.lattice(), "lbmStaticForce", applied_, dimless, true);
-
-    // Who carried the hydrostatic pressure: a restart must continue so
-    const fileName dir(scene_.mesh().time().timePath()/"uniform");
-    mkDir(dir);
-    OFstream os(dir/"buoyancyState");
-    os  << "hydrostatic " << (analytic_ ? "analytic" : "lattice") << ";" << nl
-        << "reference " << fluid_.hydrostaticReference() << ";" << nl;
-    if (!os.good())
-    {
-        FatalErrorInFunction
-            << "Could not write " << os.name() << exit(FatalError);
-    }
 }
 
 
