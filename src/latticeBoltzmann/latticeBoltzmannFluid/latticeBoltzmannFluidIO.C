@@ -96,17 +96,85 @@ void Foam::latticeBoltzmannFluid::initialise()
         }
 
         // How the populations carry the hydrostatic pressure (checked at
-        // the first step, when every effect has said how this run does)
-        writtenHydrostatic_ = "lattice";
+        // the first step, when every effect has said how this run does).
+        // Without the file: written before the analytic mode (or, for a
+        // few hours of 2026-12-06, with its mode in buoyancyState). A
+        // processor that lacks uniform/ (decomposePar in v1912 may not
+        // link it) takes the others'; water without weight (a zero
+        // gradient) carries none, the lattice mode
         writtenHydrostaticFile_ =
             runTime.timePath()/"uniform"/"lbmHydrostatic";
-        if (isFile(writtenHydrostaticFile_))
+        const fileName legacy(runTime.timePath()/"uniform"/"buoyancyState");
+        label mode = -1;   // -1 no file, 0 lattice, 1 analytic
+        if (isFile(writtenHydrostaticFile_) || isFile(legacy))
         {
-            IFstream is(writtenHydrostaticFile_);
+            const bool current = isFile(writtenHydrostaticFile_);
+            IFstream is(current ? writtenHydrostaticFile_ : legacy);
             const dictionary state(is);
-            writtenHydrostatic_ = state.get<word>("hydrostatic");
-            writtenHydrostaticGradient_ = state.get<vector>("gradient");
-            writtenHydrostaticRef_ = state.get<point>("reference");
+            const word written(state.get<word>("hydrostatic"));
+            if (written != "analytic" && written != "lattice")
+            {
+                FatalIOErrorInFunction(state)
+                    << "hydrostatic " << written << " is not allowed: the"
+                    << " populations carry it analytic or lattice"
+                    << exit(FatalIOError);
+            }
+            if (current)
+            {
+                writtenHydrostaticGradient_ = state.get<vector>("gradient");
+                writtenHydrostaticRef_ = state.get<point>("reference");
+            }
+            else
+            {
+                // (buoyancyState kept no gradient: not compared, GREAT)
+                writtenHydrostaticGradient_ = vector::uniform(GREAT);
+            }
+            mode =
+                (written == "analytic" && mag(writtenHydrostaticGradient_) > 0)
+              ? 1 : 0;
+        }
+        const label anyMode = returnReduce(mode, maxOp<label>());
+        const label noFile = returnReduce(label(mode < 0), sumOp<label>());
+        if (mode >= 0 && mode != anyMode)
+        {
+            FatalErrorInFunction
+                << "The processors' " << writtenHydrostaticFile_.name()
+                << " files of time " << runTime.timeName() << " disagree on"
+                << " how the populations carry the hydrostatic pressure"
+                << exit(FatalError);
+        }
+        writtenHydrostatic_ = anyMode == 1 ? "analytic" : "lattice";
+        if (mode < 0 && anyMode >= 0 && noFile)
+        {
+            // (from a processor that has it, for the comparison)
+            writtenHydrostaticGradient_ = Zero;
+            writtenHydrostaticRef_ = Zero;
+        }
+        if (anyMode == 1)
+        {
+            // The gradient and reference of the processors that have them
+            // (the same on each): the largest of each component
+            vector gMax(writtenHydrostaticGradient_), gMin(gMax);
+            point rMax(writtenHydrostaticRef_), rMin(rMax);
+            if (mode < 0)
+            {
+                gMax = rMax = vector::uniform(-GREAT);
+                gMin = rMin = vector::uniform(GREAT);
+            }
+            reduce(gMax, maxOp<vector>());
+            reduce(gMin, minOp<vector>());
+            reduce(rMax, maxOp<point>());
+            reduce(rMin, minOp<point>());
+            writtenHydrostaticGradient_ = gMax;
+            writtenHydrostaticRef_ = rMax;
+            if (gMax != gMin || rMax != rMin)
+            {
+                FatalErrorInFunction
+                    << "The processors' " << writtenHydrostaticFile_.name()
+                    << " files of time " << runTime.timeName() << " disagree"
+                    << " on the hydrostatic pressure's gradient or reference"
+                    << exit(FatalError);
+            }
         }
 
         // Porous flow: the porosity the populations were made with

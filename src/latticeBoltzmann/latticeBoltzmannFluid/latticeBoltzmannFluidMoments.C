@@ -408,6 +408,7 @@ Foam::wordList Foam::latticeBoltzmannFluid::populationFiles() const
     {
         names.append("lbmPorosity");
     }
+    names.append("uniform/lbmHydrostatic");
     if (boundaries_->hasAbsorbing())
     {
         names.append("uniform"/outletStateFile);

@@ -223,7 +223,12 @@ void Foam::physicsEffects::buoyancy::start()
             << " drives the flow. Use hydrostatic lattice (the default here)"
             << exit(FatalIOError);
     }
-    analytic_ = (requested_ == "default" ? can : requested_ == "analytic");
+    // (water without weight has no hydrostatic pressure to take off: the
+    // lattice mode, which it equals, so that a time written before the
+    // analytic mode existed restarts)
+    analytic_ =
+        (requested_ == "default" ? can : requested_ == "analytic")
+     && mag(fluid_.bodyAcceleration()) > 0;
 
     // A restart continues in the mode its populations were written with
     // (a time without lbmHydrostatic: the lattice carried the whole
@@ -247,11 +252,14 @@ void Foam::physicsEffects::buoyancy::start()
     {
         fluid_.useAnalyticHydrostatic();
     }
-    Info<< "Buoyancy: the hydrostatic pressure "
+    Info<< "Buoyancy: "
         << (
                analytic_
-             ? "analytic (the lattice carries p_rgh = p - rho_w g.(x - x_top))"
-             : "on the lattice"
+             ? "the hydrostatic pressure analytic (the lattice carries p_rgh"
+               " = p - rho_w g.(x - x_top))"
+             : mag(fluid_.bodyAcceleration()) > 0
+             ? "the hydrostatic pressure on the lattice"
+             : "no hydrostatic pressure (the water has no weight)"
            ) << nl << endl;
 }
 
