@@ -151,11 +151,9 @@ void Foam::latticeBoltzmannFluid::checkWrittenHydrostatic() const
             << " { hydrostatic " << writtenHydrostatic_ << "; } it had, or"
             << " start from 0" << exit(FatalError);
     }
-    // (a gradient of GREAT: not recorded, buoyancyState's time)
     if
     (
         mode == "analytic"
-     && writtenHydrostaticGradient_.x() < 0.5*GREAT
      && (
             mag(writtenHydrostaticGradient_ - hydrostaticGradient_)
           > 1e-12*mag(hydrostaticGradient_)

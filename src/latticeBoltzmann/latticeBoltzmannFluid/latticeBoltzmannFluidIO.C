@@ -97,19 +97,16 @@ void Foam::latticeBoltzmannFluid::initialise()
 
         // How the populations carry the hydrostatic pressure (checked at
         // the first step, when every effect has said how this run does).
-        // Without the file: written before the analytic mode (or, for a
-        // few hours of 2026-12-06, with its mode in buoyancyState). A
-        // processor that lacks uniform/ (decomposePar in v1912 may not
-        // link it) takes the others'; water without weight (a zero
+        // Without the file: written before the analytic mode, the lattice
+        // mode. A processor that lacks uniform/ (decomposePar in v1912 may
+        // not link it) takes the others'; water without weight (a zero
         // gradient) carries none, the lattice mode
         writtenHydrostaticFile_ =
             runTime.timePath()/"uniform"/"lbmHydrostatic";
-        const fileName legacy(runTime.timePath()/"uniform"/"buoyancyState");
         label mode = -1;   // -1 no file, 0 lattice, 1 analytic
-        if (isFile(writtenHydrostaticFile_) || isFile(legacy))
+        if (isFile(writtenHydrostaticFile_))
         {
-            const bool current = isFile(writtenHydrostaticFile_);
-            IFstream is(current ? writtenHydrostaticFile_ : legacy);
+            IFstream is(writtenHydrostaticFile_);
             const dictionary state(is);
             const word written(state.get<word>("hydrostatic"));
             if (written != "analytic" && written != "lattice")
@@ -119,22 +116,13 @@ void Foam::latticeBoltzmannFluid::initialise()
                     << " populations carry it analytic or lattice"
                     << exit(FatalIOError);
             }
-            if (current)
-            {
-                writtenHydrostaticGradient_ = state.get<vector>("gradient");
-                writtenHydrostaticRef_ = state.get<point>("reference");
-            }
-            else
-            {
-                // (buoyancyState kept no gradient: not compared, GREAT)
-                writtenHydrostaticGradient_ = vector::uniform(GREAT);
-            }
+            writtenHydrostaticGradient_ = state.get<vector>("gradient");
+            writtenHydrostaticRef_ = state.get<point>("reference");
             mode =
                 (written == "analytic" && mag(writtenHydrostaticGradient_) > 0)
               ? 1 : 0;
         }
         const label anyMode = returnReduce(mode, maxOp<label>());
-        const label noFile = returnReduce(label(mode < 0), sumOp<label>());
         if (mode >= 0 && mode != anyMode)
         {
             FatalErrorInFunction
@@ -144,12 +132,6 @@ void Foam::latticeBoltzmannFluid::initialise()
                 << exit(FatalError);
         }
         writtenHydrostatic_ = anyMode == 1 ? "analytic" : "lattice";
-        if (mode < 0 && anyMode >= 0 && noFile)
-        {
-            // (from a processor that has it, for the comparison)
-            writtenHydrostaticGradient_ = Zero;
-            writtenHydrostaticRef_ = Zero;
-        }
         if (anyMode == 1)
         {
             // The gradient and reference of the processors that have them

@@ -23,6 +23,7 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "addToMemberFunctionSelectionTable.H"
 #include "volFields.H"
+#include "selectEntry.H"
 
 namespace Foam
 {
@@ -76,16 +77,16 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     if (scene.dict().found("buoyancyCoeffs"))
     {
         const dictionary& coeffs = scene.dict().subDict("buoyancyCoeffs");
-        requested_ = coeffs.getOrDefault<word>("hydrostatic", "default");
-        if
-        (
-            requested_ != "default" && requested_ != "analytic"
-         && requested_ != "lattice"
-        )
+        if (coeffs.found("hydrostatic"))
         {
-            FatalIOErrorInFunction(coeffs)
-                << "hydrostatic " << requested_ << " is not allowed: choose"
-                << " one of (analytic lattice)" << exit(FatalIOError);
+            enum class mode { analytic, lattice };
+            const Enum<mode> modeNames
+            ({
+                {mode::analytic, "analytic"},
+                {mode::lattice, "lattice"}
+            });
+            requested_ =
+                modeNames[selectEntry(modeNames, "hydrostatic", coeffs)];
         }
         if (requested_ == "analytic" && scene.has("freeSurface"))
         {
