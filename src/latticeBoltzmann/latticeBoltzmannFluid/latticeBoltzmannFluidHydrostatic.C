@@ -21,10 +21,6 @@ License
 
 bool Foam::latticeBoltzmannFluid::canUseAnalyticHydrostatic() const
 {
-    if (freeSurface_)
-    {
-        return false;
-    }
     for (direction j = 0; j < 3; ++j)
     {
         if (lattice_.periodic()[j] && bodyAcceleration_[j] != 0)
@@ -45,8 +41,8 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
     if (!canUseAnalyticHydrostatic())
     {
         FatalErrorInFunction
-            << "the hydrostatic pressure cannot leave the lattice with a"
-            << " free surface or with g along a periodic direction"
+            << "the hydrostatic pressure cannot leave the lattice with g"
+            << " along a periodic direction"
             << abort(FatalError);
     }
     if (nSteps_ > 0)
@@ -68,6 +64,38 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
 
     const vectorField& C = mesh_.C();
     const labelList& cellNode = lattice_.cellNode();
+    if (freeSurface_ && mag(g) > 0)
+    {
+        // With a free surface the reference is the highest water's level
+        // (its nodes' centres), not the mesh's top: p_rgh is then about the
+        // gas pressure at the surface and the water's lattice density near
+        // 1 (from the mesh's top, a reservoir far below it would hold
+        // rho_0 g (x_top - x_s) less everywhere, and every force would
+        // accelerate it more by the ratio). A restart keeps the reference
+        // its populations were written with.
+        const vector up(-g/mag(g));
+        if (restarted_ && writtenHydrostatic_ == "analytic")
+        {
+            hydrostaticRef_ = writtenHydrostaticRef_;
+        }
+        else
+        {
+            scalar level = -GREAT;
+            forAll(cellNode, celli)
+            {
+                const label n = cellNode[celli];
+                if (freeSurface_->liquid(n) || freeSurface_->interface(n))
+                {
+                    level = max(level, up & C[celli]);
+                }
+            }
+            reduce(level, maxOp<scalar>());
+            if (level > -GREAT)
+            {
+                hydrostaticRef_ -= ((up & hydrostaticRef_) - level)*up;
+            }
+        }
+    }
     hydrostatic_.setSize(lattice_.nBox(), 0.0);
     forAll(cellNode, celli)
     {
@@ -80,6 +108,10 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
     (
         hydrostaticGradient_, hydrostaticRef_, p_, units_
     );
+    if (freeSurface_)
+    {
+        freeSurface_->setHydrostatic(hydrostatic_, g);
+    }
 
     if (!restarted_)
     {
@@ -90,8 +122,9 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
         scalar mass = 0;
         for (const label n : cellNode)
         {
-            if (obstacles_->solid(n))
+            if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
             {
+                // (the gas's populations are never streamed into water)
                 continue;
             }
             const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
@@ -117,7 +150,16 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
             }
             mass += rho;
         }
-        mass0_ = returnReduce(mass - displacedMass_, sumOp<scalar>());
+        // (as massDefect sums it: with a free surface, the interface
+        // nodes keep their fill levels and their masses follow their new
+        // densities)
+        scalar mass0 = mass - displacedMass_;
+        if (freeSurface_)
+        {
+            freeSurface_->resetMasses(current().cdata());
+            mass0 = freeSurface_->mass(current().cdata());
+        }
+        mass0_ = returnReduce(mass0, sumOp<scalar>());
         updateFields();
     }
 

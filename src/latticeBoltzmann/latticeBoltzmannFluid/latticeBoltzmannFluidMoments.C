@@ -24,6 +24,11 @@ Description
 
 Foam::scalar Foam::latticeBoltzmannFluid::nodePressure(const label n) const
 {
+    if (freeSurface_ && freeSurface_->gas(n))
+    {
+        // (the gas's populations are not the water's)
+        return units_.pressure(freeSurface_->rhoGas());
+    }
     const label Q = velocitySet_->Q();
     const scalarList& f = current();
     scalar rho = 0;

@@ -99,7 +99,8 @@ Foam::FixedList<Foam::label, 4> Foam::lbmBoundaries::crossingFaces
 Foam::scalar Foam::lbmBoundaries::crossingValue
 (
     const scalarField& pPatch,
-    const FixedList<label, 4>& faces
+    const FixedList<label, 4>& faces,
+    const bool linear
 ) const
 {
     // Between A and B: their mean, exact for values linear along the
@@ -117,7 +118,7 @@ Foam::scalar Foam::lbmBoundaries::crossingValue
     }
     const scalar b = pPatch[B];
     const bool wetA = a > gasPressure_, wetB = b > gasPressure_;
-    if (wetA == wetB)
+    if (linear || wetA == wetB)
     {
         return 0.5*(a + b);
     }
@@ -298,8 +299,9 @@ void Foam::lbmBoundaries::setHydrostatic
             }
         }
     }
-    // (sampled where each link crosses its patch as the patch value is:
-    // crossingValue is linear in the value without a free surface)
+    // (sampled where each link crosses its patch as the patch value is,
+    // linearly: with a free surface the patch's value has its kink at the
+    // gas's pressure, p_h none)
     hydroRhoGrad_ = (units.rhoLattice(1) - 1)*gradP;
     hydroRef_ = ref;
     const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();
@@ -313,7 +315,8 @@ void Foam::lbmBoundaries::setHydrostatic
             ph[patchi] = gradP & (patches[patchi].faceCentres() - ref);
         }
         abbHydro_[i] =
-            units.rhoLattice(crossingValue(ph[patchi], abbFaces_[i])) - 1;
+            units.rhoLattice(crossingValue(ph[patchi], abbFaces_[i], true))
+          - 1;
         abbRho_[i] -= abbHydro_[i];
     }
 }

@@ -130,6 +130,7 @@ Foam::lbmFreeSurface::lbmFreeSurface
     porosity_(porosity),
     storage_(storage),
     rhoGas_(units.rhoLattice(gasPressure)),
+    hydrostaticG_(Zero),
     fillMargin_(fillMargin),
     sigmaRho_
     (
@@ -454,7 +455,8 @@ Foam::lbmFreeSurface::gasAtSurface Foam::lbmFreeSurface::gasState
     const vector& g
 ) const
 {
-    const bool gravity = (magSqr(g) > 0);
+    // (the weight the lattice applies, g, or the one off it)
+    const bool gravity = (magSqr(g) > 0 || magSqr(hydrostaticG_) > 0);
     const scalar eps = porosity(x);
     const vector grad
     (
@@ -491,6 +493,15 @@ Foam::lbmFreeSurface::gasAtSurface Foam::lbmFreeSurface::gasState
         // acts on n times the pore water's; x_mid - x_s in lattice units,
         // cs^2 = 1/3)
         gs.gradP = 3*(g + otherForce(x)/eps);
+    }
+    if (hydrostaticRho_.size())
+    {
+        // The populations carry p_rgh = p - p_h: the gas pressure at the
+        // surface less p_h there (p_h linear: 3 g.d of lattice density
+        // over d), carried from there with the rest of the slow flow's
+        // gradient (the lattice's g is then zero). The sum at the link's
+        // middle is the gas pressure carried as above with rho_0 g + F_d
+        gs.rho -= hydrostaticRho_[x] + 3*(hydrostaticG_ & gs.surface);
     }
     return gs;
 }
@@ -543,6 +554,21 @@ void Foam::lbmFreeSurface::exchangeBoundaryMass(const scalar* f)
 }
 
 
+void Foam::lbmFreeSurface::setHydrostatic
+(
+    const scalarList& pH,
+    const vector& g
+)
+{
+    hydrostaticRho_.setSize(lattice_.nBox(), 0.0);
+    for (const label n : lattice_.cellNode())
+    {
+        hydrostaticRho_[n] = units_.rhoLattice(pH[n]) - 1;
+    }
+    hydrostaticG_ = units_.accelerationToLattice(g);
+}
+
+
 void Foam::lbmFreeSurface::setForces(const scalar* const forces[6])
 {
     for (label i = 0; i < 6; ++i)
@@ -590,7 +616,10 @@ Foam::scalar Foam::lbmFreeSurface::memoryBytes() const
     return
         sizeof(label)*type_.size()
       + sizeof(scalar)
-       *(mass_.size() + fill_.size() + rhoU_.size() + share_.size());
+       *(
+            mass_.size() + fill_.size() + rhoU_.size() + share_.size()
+          + hydrostaticRho_.size()
+        );
 }
 
 

@@ -71,7 +71,7 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     }
 
     // Who carries the hydrostatic pressure: the lattice, or (the default
-    // where it can: no free surface, g along no periodic direction) the
+    // where it can: g along no periodic direction) the
     // analytic rho_w g.(x - x_top); decided at the first step, when gravity
     // has been set
     if (scene.dict().found("buoyancyCoeffs"))
@@ -87,15 +87,6 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
             });
             requested_ =
                 modeNames[selectEntry(modeNames, "hydrostatic", coeffs)];
-        }
-        if (requested_ == "analytic" && scene.has("freeSurface"))
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "hydrostatic analytic is not allowed with freeSurface:"
-                << " the gas's pressure at the surface is set on the"
-                << " lattice, which must carry the whole pressure."
-                << " Use hydrostatic lattice (the default with a free"
-                << " surface)" << exit(FatalIOError);
         }
     }
 
@@ -227,8 +218,19 @@ void Foam::physicsEffects::buoyancy::start()
     // (water without weight has no hydrostatic pressure to take off: the
     // lattice mode, which it equals, so that a time written before the
     // analytic mode existed restarts)
+    // With a free surface the lattice mode stays the default: off the
+    // lattice, the water at a surface off the reference level holds p_rgh
+    // of that level's depth, and its porosity term at a soil's face
+    // alternates between node rows as the whole pressure's did below a
+    // single level (measured: a rectangular dam between reservoirs 0.3 m
+    // apart, validation/dupuitSeepage, moved its faces' water at 0.2 m/s
+    // with it; in the lattice mode the surfaces hold the gas pressure).
     analytic_ =
-        (requested_ == "default" ? can : requested_ == "analytic")
+        (
+            requested_ == "default"
+          ? can && !fluid_.freeSurface()
+          : requested_ == "analytic"
+        )
      && mag(fluid_.bodyAcceleration()) > 0;
 
     // A restart continues in the mode its populations were written with
@@ -316,15 +318,22 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
     // are not the water's), no weight there; the share of water of each
     // node (the fill level) takes the soil's pore-pressure force: dry soil
     // feels none
+    // (less the hydrostatic pressure where it is off the lattice: the gas
+    // pressure then continues p_rgh across the surface)
     const lbmFreeSurface* fs = fluid_.freeSurface();
     if (fs)
     {
+        const lbmUnits& units = fluid_.units();
         for (const label n : cellNode)
         {
             if (fs->gas(n))
             {
                 weight_[n] = Zero;
-                pressure_[n] = (fs->rhoGas() - 1)/3;
+                pressure_[n] =
+                (
+                    fs->rhoGas()
+                  - units.rhoLattice(fluid_.hydrostaticPressure(n))
+                )/3;
             }
         }
     }
@@ -362,12 +371,19 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
     );
     soilForce_ = Zero;
     maxForce_ = 0;
+    if (fs && analytic_)
+    {
+        interfacePorosityForce(fs);
+    }
     for (const label n : cellNode)
     {
         const vector D = 3*gradP_[n];
         const vector Fw = porosity_[n]*D - 3*gradNP_[n];
 
-        target_[n] = Fw;
+        if (!(fs && analytic_ && fs->interface(n)))
+        {
+            target_[n] = Fw;
+        }
 
         const scalar phi = 1 - porosity_[n];
         const scalar wet = (fs ? fs->fill(n) : 1);
@@ -402,12 +418,14 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
     }
     // (with a free surface, only the liquid nodes: the surface's nodes
     // balance the lattice's own weight against the gas pressure rebuilt
-    // at their links, as in clear water, and the gas takes no force)
+    // at their links, as in clear water, and the gas takes no force; with
+    // the hydrostatic pressure off the lattice the interface nodes keep
+    // their porosity term, interfacePorosityForce)
     if (fs)
     {
         for (const label n : cellNode)
         {
-            if (!fs->liquid(n))
+            if (!fs->liquid(n) && !(analytic_ && fs->interface(n)))
             {
                 target_[n] = Zero;
             }
@@ -430,11 +448,13 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         }
         if (fs)
         {
+            // (the interface nodes' porosity term, where there is one,
+            // applied as it is: see interfacePorosityForce)
             for (const label n : cellNode)
             {
                 if (!fs->liquid(n))
                 {
-                    X[n] = Zero;
+                    X[n] = fs->interface(n) ? target_[n] : Zero;
                 }
             }
         }
@@ -457,6 +477,53 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
 
     soil_.addNodeForces(soilForce_);
     maxForce_ /= lattice.cellVolume();
+}
+
+
+void Foam::physicsEffects::buoyancy::interfacePorosityForce
+(
+    const lbmFreeSurface* fs
+)
+{
+    // With the hydrostatic pressure off the lattice the water at a free
+    // surface holds p_rgh = p_gas - rho_w g.(x_s - x_top), not the gas
+    // pressure: wherever the surface is off the reference level, the
+    // porosity term p_rgh grad(n) at an interface node is of the depth's
+    // size (a reservoir's surface 0.3 m below the other's against a dam's
+    // face: p_rgh about -3 kPa; left out, the surface's nodes at the face
+    // were driven at 0.2 m/s). The lattice gives interface node x
+    //     -3 S(n' p),  n'(y) = n(y) from water, n(x) from the gas
+    // (the gas's populations are rebuilt at x's own porosity), so its term
+    //     n(x) D(p) - 3 S(n' p) = 3 sum_q w_q c_q (n(x) - n(y)) p(y)
+    // runs over the water neighbours y = x - c_q only (walls and patches
+    // reflect x's own: none). Applied as it is, without the half-step
+    // balance of the liquid nodes, as the surface's own forces are.
+    const latticeMesh& lattice = fluid_.lattice();
+    const velocitySet& vs = fluid_.velocities();
+    const List<labelVector>& c = vs.c();
+    const scalarList& w = vs.w();
+    const label nBox = lattice.nBox();
+    lattice.halo().exchange(pressure_.data(), 1, nBox);
+    lattice.halo().exchange(porosity_.data(), 1, nBox);
+    for (const label x : lattice.cellNode())
+    {
+        if (!fs->interface(x))
+        {
+            continue;
+        }
+        vector F(Zero);
+        for (label q = 1; q < vs.Q(); ++q)
+        {
+            const label y = x - lattice.offset(c[q].x(), c[q].y(), c[q].z());
+            if (fs->liquid(y) || fs->interface(y))
+            {
+                F +=
+                    (3*w[q]*(porosity_[x] - porosity_[y])*pressure_[y])
+                   *vector(c[q]);
+            }
+        }
+        target_[x] = F;
+    }
 }
 
 
