@@ -36,8 +36,9 @@ def summary(case, wanted):
         last = (float(t), front)
         if wanted and not any(abs(float(t) - w) < 1e-9 for w in wanted):
             continue
-        Us = foamio.read_cloud(case, t, 'U')
-        Uw = foamio.read(case, t, 'U')
+        Us = np.atleast_2d(foamio.read_cloud(case, t, 'U'))
+        # (a uniform field, e.g. U at 0, is one vector)
+        Uw = np.atleast_2d(foamio.read(case, t, 'U'))
         rows.append((t, front, speed, x[:, 1].max(),
                      np.sqrt((Us**2).sum(axis=1)).max(),
                      np.sqrt((Uw**2).sum(axis=1)).max()))
