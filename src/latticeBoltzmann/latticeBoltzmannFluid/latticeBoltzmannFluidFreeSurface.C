@@ -84,6 +84,18 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
 }
 
 
+void Foam::latticeBoltzmannFluid::setFreeSurfaceStaticForce
+(
+    const List<vector>* X
+)
+{
+    if (freeSurface_)
+    {
+        freeSurface_->setStaticForce(X);
+    }
+}
+
+
 void Foam::latticeBoltzmannFluid::setFreeSurfaceForces()
 {
     if (Fx_.empty())

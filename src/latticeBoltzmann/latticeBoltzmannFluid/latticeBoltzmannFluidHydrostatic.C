@@ -71,12 +71,27 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
         // gas pressure at the surface and the water's lattice density near
         // 1 (from the mesh's top, a reservoir far below it would hold
         // rho_0 g (x_top - x_s) less everywhere, and every force would
-        // accelerate it more by the ratio). A restart keeps the reference
-        // its populations were written with.
+        // accelerate it more by the ratio). A restart keeps the level its
+        // populations were written with: the reference is the mesh's
+        // corner moved along g (checkWrittenHydrostatic compares the
+        // written one with it across g, and its level within the mesh).
         const vector up(-g/mag(g));
         if (restarted_ && writtenHydrostatic_ == "analytic")
         {
-            hydrostaticRef_ = writtenHydrostaticRef_;
+            const point& w = writtenHydrostaticRef_;
+            const vector across =
+                (w - hydrostaticRef_) - ((w - hydrostaticRef_) & up)*up;
+            const scalar level = up & w;
+            if
+            (
+                mag(across) <= 1e-9*max(mag(hydrostaticRef_), lattice_.dx())
+             && level <= (up & hydrostaticRef_) + 1e-9*lattice_.dx()
+             && level >= (up & hydrostaticRef_) - mag(bb.span())
+            )
+            {
+                hydrostaticRef_ = w;
+            }
+            // (otherwise the mesh moved: checkWrittenHydrostatic stops)
         }
         else
         {
@@ -146,7 +161,17 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
                     << "    Start the water from the hydrostatic pressure in"
                     << " 0/p (setExprFields with p = rho g (h - y), as the"
                     << " tutorials do), or smaller deltaT (a faster lattice"
-                    << " sound speed)" << exit(FatalError);
+                    << " sound speed)"
+                    << (
+                           freeSurface_
+                         ? "; with a free surface, water far below the"
+                           " highest level holds p_rgh = -rho g times that"
+                           " depth: keep the pressure on the lattice,"
+                           " buoyancyCoeffs { hydrostatic lattice; } (the"
+                           " default with a free surface)"
+                         : ""
+                       )
+                    << exit(FatalError);
             }
             mass += rho;
         }

@@ -129,6 +129,7 @@ Foam::lbmFreeSurface::lbmFreeSurface
     obstacles_(obstacles),
     porosity_(porosity),
     storage_(storage),
+    staticForce_(nullptr),
     rhoGas_(units.rhoLattice(gasPressure)),
     hydrostaticG_(Zero),
     fillMargin_(fillMargin),
@@ -492,7 +493,15 @@ Foam::lbmFreeSurface::gasAtSurface Foam::lbmFreeSurface::gasState
         // (the pores' pressure gradient: the lattice's force n rho_0 g + F_d
         // acts on n times the pore water's; x_mid - x_s in lattice units,
         // cs^2 = 1/3)
-        gs.gradP = 3*(g + otherForce(x)/eps);
+        gs.gradP =
+            3
+           *(
+                g
+              + (
+                    otherForce(x)
+                  - (staticForce_ ? (*staticForce_)[x] : vector::zero)
+                )/eps
+            );
     }
     if (hydrostaticRho_.size())
     {
