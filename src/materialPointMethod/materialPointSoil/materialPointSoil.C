@@ -775,6 +775,25 @@ void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
 }
 
 
+void Foam::materialPointSoil::addPointForces
+(
+    const UList<label>& pointIndices,
+    const vector& f
+)
+{
+    if (!hasPointForces_ || pointForce_.size() != points_.size())
+    {
+        pointForce_.setSize(points_.size());
+        pointForce_ = Zero;
+    }
+    hasPointForces_ = true;
+    for (const label p : pointIndices)
+    {
+        pointForce_[p] += f;
+    }
+}
+
+
 void Foam::materialPointSoil::clearPointForces()
 {
     pointForce_ = Zero;

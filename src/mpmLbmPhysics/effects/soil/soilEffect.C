@@ -62,6 +62,10 @@ Foam::sceneStageList Foam::physicsEffects::soil::stages() const
 
 void Foam::physicsEffects::soil::evolve(const sceneStage)
 {
+    for (const auto& work : beforeAdvance_)
+    {
+        work();
+    }
     mpm_.advance(scene_.mesh().time().deltaTValue());
 
     // The couplings' forces were for this step
