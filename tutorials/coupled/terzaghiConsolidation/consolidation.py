@@ -17,8 +17,9 @@
 #     = rho_w c_s^2 the lattice water's bulk modulus (what the solver's log
 #     states as the factor the consolidation runs slower than with water);
 #     the surface's settlement w(t) = (1/M) int (gamma' z - u) dz.
-#     Reads the case's dictionaries for H_s = 1 m's layer: E, nu, rho of
-#     the sand, d and muFluid, deltaT and the mesh. Prints per written time
+#     Reads the case's dictionaries: E and nu of the sand, d and muFluid,
+#     deltaT and the mesh; the layer's H_s = 1 m, n = 0.4 and rho_s =
+#     2650 kg/m3 are the tutorial's (set below). Prints per written time
 #     T_v, the excess pore pressure at the bottom and the settlement, each
 #     against the series, and the largest pore-pressure error; with --png,
 #     the isochrones u/(gamma' H_s) against z/H_s and the settlement

@@ -51,7 +51,8 @@ Foam::physicsEffects::surfaceLoad::surfaceLoad(physicsScene& scene)
         )
     ),
     soil_(scene.effect<physicsEffects::soil>("soil").mpm()),
-    started_(false)
+    started_(false),
+    startFile_(scene.mesh().time().timePath()/"uniform"/"surfaceLoad")
 {
     const fvMesh& mesh = scene.mesh();
     const boundBox& bounds = mesh.bounds();
@@ -145,6 +146,7 @@ Foam::physicsEffects::surfaceLoad::surfaceLoad(physicsScene& scene)
 
         r->pressure = Function1<scalar>::New("pressure", d);
         r->nPoints = 0;
+        r->nFound = 0;
         r->lastPressure = 0;
         r->lastPosition = 0;
         loads_.append(r.ptr());
@@ -190,49 +192,52 @@ Foam::physicsEffects::surfaceLoad::surfaceLoad(physicsScene& scene)
 
 void Foam::physicsEffects::surfaceLoad::start()
 {
-    const Time& runTime = scene_.mesh().time();
-    const fileName file(runTime.timePath()/"uniform"/"surfaceLoad");
+    // (the file of the time the run started from: a processor that
+    // decomposePar left without uniform/ takes the others')
+    const fileName& file = startFile_;
+    const bool mine = isFile(file);
+    const bool restart = returnReduce(mine, orOp<bool>());
+    dictionary written;
+    if (mine)
+    {
+        IFstream is(file);
+        written = dictionary(is);
+    }
     const materialPoints& points = soil_.points();
 
-    if (isFile(file))
+    for (region& r : loads_)
     {
-        // A restart: the points its time was written with
-        IFstream is(file);
-        const dictionary written(is);
-        for (region& r : loads_)
+        labelList local;
+        if (restart && mine)
         {
+            // A restart: the points its time was written with
             if (!written.isDict(r.name))
             {
                 FatalIOErrorInFunction(written)
                     << "The load " << r.name << " of " << dict_.objectPath()
-                    << " is not in " << file
-                    << " (loads " << written.toc() << "): a restart loads"
-                    << " the points its time was written with." << nl
+                    << " is not in " << file << " (loads " << written.toc()
+                    << "): a restart loads the points its time was written"
+                    << " with." << nl
                     << "    Restart with the loads of that run, or start"
                     << " from 0" << exit(FatalIOError);
             }
-            const labelList ids(written.subDict(r.name).get<labelList>("ids"));
-            r.ids.clear();
-            r.ids.insert(ids);
-            r.nPoints = ids.size();
+            local = written.subDict(r.name).get<labelList>("ids");
         }
-        Info<< "Surface loads: the points of " << file << nl << endl;
-        return;
-    }
-
-    // The points in each box now
-    for (region& r : loads_)
-    {
-        DynamicList<label> mine;
-        forAll(points.x, p)
+        else if (!restart)
         {
-            if (r.box.contains(points.x[p]))
+            // The points in the box now
+            DynamicList<label> inBox;
+            forAll(points.x, p)
             {
-                mine.append(points.id[p]);
+                if (r.box.contains(points.x[p]))
+                {
+                    inBox.append(points.id[p]);
+                }
             }
+            local.transfer(inBox);
         }
         List<labelList> all(Pstream::nProcs());
-        all[Pstream::myProcNo()] = mine;
+        all[Pstream::myProcNo()] = local;
         Pstream::gatherList(all);
         Pstream::scatterList(all);
         r.ids.clear();
@@ -249,8 +254,12 @@ void Foam::physicsEffects::surfaceLoad::start()
                 << " loads (one layer at the soil's surface)"
                 << exit(FatalIOError);
         }
-        Info<< "Surface load " << r.name << ": " << r.nPoints << " points"
-            << nl;
+        Info<< "Surface load " << r.name << ": " << r.nPoints << " points";
+        if (restart)
+        {
+            Info<< " (as written in " << file << ")";
+        }
+        Info<< nl;
     }
     Info<< endl;
 }
@@ -265,7 +274,10 @@ void Foam::physicsEffects::surfaceLoad::apply()
         started_ = true;
         start();
     }
-    const scalar t = scene_.mesh().time().value();
+    // The step's start: the soil advances over [t - dt, t] with the forces
+    // it has at its start (as its weight, materialPointSoil::rampedGravity)
+    const Time& runTime = scene_.mesh().time();
+    const scalar t = runTime.value() - runTime.deltaTValue();
     const materialPoints& points = soil_.points();
 
     for (region& r : loads_)
@@ -287,19 +299,25 @@ void Foam::physicsEffects::surfaceLoad::apply()
                 << "pressure of load " << r.name << " is " << P << " at t = "
                 << t << " s: a finite value is needed" << exit(FatalIOError);
         }
-        soil_.addPointForces(selected_, (P*r.area/r.nPoints)*r.direction);
-        r.lastPressure = P;
+        // (the points still there share p A: eroded ones drop out)
+        r.nFound = returnReduce(selected_.size(), sumOp<label>());
         reduce(position, sumOp<scalar>());
-        r.lastPosition = position/r.nPoints;
+        if (r.nFound > 0)
+        {
+            soil_.addPointForces(selected_, (P*r.area/r.nFound)*r.direction);
+            r.lastPosition = position/r.nFound;
+        }
+        r.lastPressure = P;
     }
 
     if (stepFile_.valid() && stepFile_->writeToFile())
     {
         OFstream& os = stepFile_->file();
-        stepFile_->writeCurrentTime(os);
+        os  << t;
         for (const region& r : loads_)
         {
-            os  << tab << r.lastPressure << tab << r.lastPressure*r.area
+            os  << tab << r.lastPressure
+                << tab << (r.nFound > 0 ? r.lastPressure*r.area : 0)
                 << tab << r.lastPosition;
         }
         os  << endl;
