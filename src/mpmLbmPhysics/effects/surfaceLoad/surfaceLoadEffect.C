@@ -274,8 +274,9 @@ void Foam::physicsEffects::surfaceLoad::apply()
         started_ = true;
         start();
     }
-    // The step's start: the soil advances over [t - dt, t] with the forces
-    // it has at its start (as its weight, materialPointSoil::rampedGravity)
+    // The step's start: the soil advances over [t - dt, t] with the force
+    // it has at its start, constant over its sub-steps (as the couplings'
+    // forces)
     const Time& runTime = scene_.mesh().time();
     const scalar t = runTime.value() - runTime.deltaTValue();
     const materialPoints& points = soil_.points();
