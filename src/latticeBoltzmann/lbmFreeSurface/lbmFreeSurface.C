@@ -131,6 +131,7 @@ Foam::lbmFreeSurface::lbmFreeSurface
     storage_(storage),
     staticForce_(nullptr),
     rhoGas_(units.rhoLattice(gasPressure)),
+    hydrostatic_(nullptr),
     hydrostaticG_(Zero),
     fillMargin_(fillMargin),
     sigmaRho_
@@ -503,14 +504,16 @@ Foam::lbmFreeSurface::gasAtSurface Foam::lbmFreeSurface::gasState
                 )/eps
             );
     }
-    if (hydrostaticRho_.size())
+    if (hydrostatic_)
     {
         // The populations carry p_rgh = p - p_h: the gas pressure at the
         // surface less p_h there (p_h linear: 3 g.d of lattice density
         // over d), carried from there with the rest of the slow flow's
         // gradient (the lattice's g is then zero). The sum at the link's
         // middle is the gas pressure carried as above with rho_0 g + F_d
-        gs.rho -= hydrostaticRho_[x] + 3*(hydrostaticG_ & gs.surface);
+        gs.rho -=
+            units_.rhoLattice((*hydrostatic_)[x]) - 1
+          + 3*(hydrostaticG_ & gs.surface);
     }
     return gs;
 }
@@ -569,11 +572,7 @@ void Foam::lbmFreeSurface::setHydrostatic
     const vector& g
 )
 {
-    hydrostaticRho_.setSize(lattice_.nBox(), 0.0);
-    for (const label n : lattice_.cellNode())
-    {
-        hydrostaticRho_[n] = units_.rhoLattice(pH[n]) - 1;
-    }
+    hydrostatic_ = &pH;
     hydrostaticG_ = units_.accelerationToLattice(g);
 }
 
@@ -625,10 +624,7 @@ Foam::scalar Foam::lbmFreeSurface::memoryBytes() const
     return
         sizeof(label)*type_.size()
       + sizeof(scalar)
-       *(
-            mass_.size() + fill_.size() + rhoU_.size() + share_.size()
-          + hydrostaticRho_.size()
-        );
+       *(mass_.size() + fill_.size() + rhoU_.size() + share_.size());
 }
 
 

@@ -725,6 +725,19 @@ void Foam::materialPointSoil::nodalFields
 }
 
 
+void Foam::materialPointSoil::preparePointForces()
+{
+    // (sized to the points of now: removed or arrived points since the
+    // last step reset them; the forces of this step are added after)
+    if (!hasPointForces_ || pointForce_.size() != points_.size())
+    {
+        pointForce_.setSize(points_.size());
+        pointForce_ = Zero;
+    }
+    hasPointForces_ = true;
+}
+
+
 void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
 {
     // Each node's force goes to the points in proportion to the mass they
@@ -733,12 +746,7 @@ void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
     // receive exactly the total force, and through P2G, the grid update
     // and G2P the impulse dt sum(f) reaches the points' momentum exactly
     // (partition of unity)
-    if (!hasPointForces_ || pointForce_.size() != points_.size())
-    {
-        pointForce_.setSize(points_.size());
-        pointForce_ = Zero;
-    }
-    hasPointForces_ = true;
+    preparePointForces();
 
     // Parallel: the points near a processor boundary take shares of the
     // neighbour's nodes, whose forces are copied into the halo
@@ -781,12 +789,7 @@ void Foam::materialPointSoil::addPointForces
     const vector& f
 )
 {
-    if (!hasPointForces_ || pointForce_.size() != points_.size())
-    {
-        pointForce_.setSize(points_.size());
-        pointForce_ = Zero;
-    }
-    hasPointForces_ = true;
+    preparePointForces();
     for (const label p : pointIndices)
     {
         pointForce_[p] += f;

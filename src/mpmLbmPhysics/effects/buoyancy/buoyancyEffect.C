@@ -255,6 +255,9 @@ void Foam::physicsEffects::buoyancy::start()
     if (analytic_)
     {
         fluid_.useAnalyticHydrostatic();
+        // (the interface nodes' porosity term, applied through X, is no
+        // pressure gradient: the gas pressure is carried without it)
+        fluid_.setFreeSurfaceStaticForce(&applied_);
     }
     Info<< "Buoyancy: "
         << (
@@ -372,22 +375,12 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
     );
     soilForce_ = Zero;
     maxForce_ = 0;
-    if (fs && analytic_)
-    {
-        interfacePorosityForce(fs);
-        // (the gas pressure is carried from the surface without it: it
-        // balances the lattice's porosity term, no pressure gradient)
-        fluid_.setFreeSurfaceStaticForce(&applied_);
-    }
     for (const label n : cellNode)
     {
         const vector D = 3*gradP_[n];
         const vector Fw = porosity_[n]*D - 3*gradNP_[n];
 
-        if (!(fs && analytic_ && fs->interface(n)))
-        {
-            target_[n] = Fw;
-        }
+        target_[n] = Fw;
 
         const scalar phi = 1 - porosity_[n];
         const scalar wet = (fs ? fs->fill(n) : 1);
@@ -398,6 +391,12 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
               + (phi*wet)*archimedes;
             maxForce_ = max(maxForce_, mag(soilForce_[n]));
         }
+    }
+
+    if (fs && analytic_)
+    {
+        // (the interface nodes' porosity term from their water neighbours)
+        interfacePorosityForce(fs);
     }
 
     // Guo's scheme carries half of each step's force into the next, and

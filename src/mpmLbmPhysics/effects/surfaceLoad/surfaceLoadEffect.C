@@ -15,6 +15,7 @@ License
 #include "physicsScene.H"
 #include "soilEffect.H"
 #include "caseChecks.H"
+#include "selectEntry.H"
 #include "OFstream.H"
 #include "IFstream.H"
 #include "addToRunTimeSelectionTable.H"
@@ -80,14 +81,13 @@ Foam::physicsEffects::surfaceLoad::surfaceLoad(physicsScene& scene)
         autoPtr<region> r(new region);
         r->name = e.keyword();
 
-        const word type(d.get<word>("type"));
-        if (type != "searchableBox")
-        {
-            FatalIOErrorInFunction(d)
-                << "type " << type << " is not allowed: a load's points are"
-                << " those in a searchableBox (min, max) at the start"
-                << exit(FatalIOError);
-        }
+        // (a load's points are those in a box at the start)
+        enum class regionType { box };
+        selectEntry
+        (
+            Enum<regionType>({{regionType::box, "searchableBox"}}),
+            "type", d
+        );
         r->box = boundBox(d.get<point>("min"), d.get<point>("max"));
         if (!r->box.valid() || !r->box.overlaps(bounds))
         {
