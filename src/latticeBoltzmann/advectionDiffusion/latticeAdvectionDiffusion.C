@@ -322,6 +322,13 @@ void Foam::latticeAdvectionDiffusion::initialise
     gA_.setSize(Q_*nBox, 0.0);
     gB_.setSize(Q_*nBox, 0.0);
     AisCurrent_ = true;
+    if (surface_)
+    {
+        forAll(wasWater_, n)
+        {
+            wasWater_[n] = surface_->water(n);
+        }
+    }
     scalarList& g = current();
 
     const word prefix(C_.name() + "G");
@@ -352,11 +359,21 @@ void Foam::latticeAdvectionDiffusion::initialise
     else
     {
         const labelList& cellNode = lattice_.cellNode();
+        label nDry = 0;
         forAll(cellNode, celli)
         {
             const label n = cellNode[celli];
             const scalar eps = porosity ? (*porosity)[n] : 1;
-            const scalar Phi = eps*C_[celli];
+            if (!water(n))
+            {
+                // (the gas holds none: its populations stay 0)
+                nDry += (C_[celli] > 0);
+                continue;
+            }
+            // (an interface node's water fills the fraction phi of its
+            // pores: C is per volume of water, as the field is written)
+            const scalar Phi =
+                eps*C_[celli]*(surface_ ? surface_->fill(n) : 1);
             const vector v = u[n]/eps;
             g[n] = Phi*(w0_ - magSqr(v));
             for (label q = 1; q < Q_; ++q)
@@ -364,6 +381,14 @@ void Foam::latticeAdvectionDiffusion::initialise
                 const scalar va = v[axisOf(q)];
                 g[q*nBox + n] = 0.5*Phi*(cs2_ + va*va + signOf(q)*va);
             }
+        }
+        if (returnReduce(nDry, sumOp<label>()))
+        {
+            WarningInFunction
+                << C_.objectPath() << ": " << C_.name() << " is positive in "
+                << returnReduce(nDry, sumOp<label>()) << " cells of the gas"
+                << " (alpha.water 0): the scalar lives in the water only,"
+                << " and starts at 0 there" << endl;
         }
     }
 
@@ -384,6 +409,11 @@ void Foam::latticeAdvectionDiffusion::fillBoundaries
     forAll(linkNode_, l)
     {
         const label x = linkNode_[l];
+        if (!water(x))
+        {
+            // (a gas node: not simulated, nothing crosses its links)
+            continue;
+        }
         const label i = linkDir_[l];
         const label slot = oppositeOf(i)*nBox + x + offset_[i];
         const scalar gi = g[i*nBox + x];
@@ -461,6 +491,10 @@ void Foam::latticeAdvectionDiffusion::instability
     const label nBox = lattice_.nBox();
     for (const label n : lattice_.cellNode())
     {
+        if (!water(n))
+        {
+            continue;
+        }
         scalar Phi = 0;
         for (label q = 0; q < Q_; ++q)
         {
@@ -488,6 +522,180 @@ void Foam::latticeAdvectionDiffusion::instability
 }
 
 
+void Foam::latticeAdvectionDiffusion::followSurface()
+{
+    if (!surface_ || !initialised_)
+    {
+        return;
+    }
+    const label nBox = lattice_.nBox();
+    const scalar w0 = w0_;
+    const scalar wi = 0.5*cs2_;
+    scalarList& g = current();
+
+    // Nodes the water reached start empty; nodes it left give their
+    // scalar, in equal shares, to their water neighbours (the fluid's
+    // conversion leaves every emptied node at least one: a liquid
+    // neighbour turns interface)
+    givers_.clear();
+    for (const label n : lattice_.cellNode())
+    {
+        const bool now = surface_->water(n);
+        if (now == wasWater_[n])
+        {
+            continue;
+        }
+        if (!now)
+        {
+            scalar held = 0;
+            for (label q = 0; q < Q_; ++q)
+            {
+                held += g[q*nBox + n];
+            }
+            label nWater = 0;
+            for (const label o : neighbours_)
+            {
+                nWater += surface_->water(n + o);
+            }
+            if (held != 0)
+            {
+                if (nWater)
+                {
+                    share_[n] = held/nWater;
+                    givers_.append(n);
+                }
+                else
+                {
+                    stranded_ += held*lattice_.cellVolume();
+                }
+            }
+        }
+        for (label q = 0; q < Q_; ++q)
+        {
+            g[q*nBox + n] = 0;
+        }
+        wasWater_[n] = now;
+    }
+    lattice_.halo().exchange(share_.data(), 1, nBox);
+
+    // Each owned water node takes the shares of its neighbours that gave
+    // (owned, or another processor's through the halo), as a source: the
+    // lattice weights
+    const List<unsigned char>& kind = lattice_.kind();
+    auto give = [&](const label x)
+    {
+        const scalar s = share_[x];
+        for (const label o : neighbours_)
+        {
+            const label y = x + o;
+            if (kind[y] == latticeMesh::OWNED && surface_->water(y))
+            {
+                g[y] += w0*s;
+                for (label q = 1; q < Q_; ++q)
+                {
+                    g[q*nBox + y] += wi*s;
+                }
+            }
+        }
+    };
+    for (const label x : givers_)
+    {
+        give(x);
+    }
+    for (const label x : haloNodes_)
+    {
+        if (share_[x] != 0)
+        {
+            give(x);
+            share_[x] = 0;
+        }
+    }
+    for (const label x : givers_)
+    {
+        share_[x] = 0;
+    }
+}
+
+
+void Foam::latticeAdvectionDiffusion::surfaceLinks(scalar* g) const
+{
+    // The links that touch an interface node. A packet p_sr that node s
+    // sends towards r crosses by the fraction min(phi_s, phi_r)/phi_s of
+    // its fill level (the wet part of the face between them) and the rest
+    // returns to s: each packet crosses or returns, so the content is
+    // conserved and no population turns negative, and as
+    // phi_s a_sr = min(phi_s, phi_r) = phi_r a_rs, a uniform
+    // concentration C = Phi/(n phi) exchanges nothing (detailed balance:
+    // a full node and a half-full one at the same C). Towards the gas
+    // (phi 0) everything returns: the surface closes the scalar in.
+    const label nBox = lattice_.nBox();
+    const List<unsigned char>& kind = lattice_.kind();
+    auto level = [this](const label n)
+    {
+        return max(surface_->fill(n), scalar(1e-6));
+    };
+
+    // x receives along q from y = x - c_q: the slot g[q, y]; y receives
+    // along -q from x: the slot g[-q, x]
+    auto exchange = [&](const label x, const label y, const label q)
+    {
+        const label qb = oppositeOf(q);
+        scalar& sx = g[q*nBox + y];
+        scalar& sy = g[qb*nBox + x];
+        const scalar pyx = sx;
+        const scalar pxy = sy;
+        const scalar fx = level(x);
+        const scalar fy = level(y);
+        const scalar m = min(fx, fy);
+        const scalar ayx = m/fy;
+        const scalar axy = m/fx;
+        sx = ayx*pyx + (1 - axy)*pxy;
+        sy = axy*pxy + (1 - ayx)*pyx;
+    };
+
+    for (const label x : surface_->interfaceNodes())
+    {
+        for (label q = 1; q < Q_; ++q)
+        {
+            const label y = x - offset_[q];
+            if (surface_->gasNode(y))
+            {
+                g[q*nBox + y] = g[oppositeOf(q)*nBox + x];
+            }
+            else if
+            (
+                surface_->water(y)
+             && !(kind[y] == latticeMesh::OWNED && surface_->interface(y)
+                  && y < x)
+            )
+            {
+                exchange(x, y, q);
+            }
+        }
+    }
+    // (another processor's interface nodes next to this one's liquid)
+    for (const label h : haloNodes_)
+    {
+        if (!(surface_->water(h) && surface_->fill(h) < 1))
+        {
+            continue;
+        }
+        for (label q = 1; q < Q_; ++q)
+        {
+            const label y = h - offset_[q];
+            if
+            (
+                y >= 0 && y < nBox && kind[y] == latticeMesh::OWNED
+             && surface_->liquid(y)
+            )
+            {
+                exchange(h, y, q);
+            }
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
@@ -497,7 +705,8 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
     const word& fieldName,
     const dictionary& dict,
     const lbmBoundaries& water,
-    const volVectorField& U
+    const volVectorField& U,
+    const lbmFreeSurface* surface
 )
 :
     lattice_(lattice),
@@ -530,7 +739,9 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
     limited_(0),
     PhiMin_(0),
     nSteps_(0),
-    initialised_(false)
+    initialised_(false),
+    surface_(surface),
+    stranded_(0)
 {
     setRelaxation(dict);
 
@@ -539,6 +750,39 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
         labelVector c(Zero);
         c[axisOf(q)] = label(signOf(q));
         offset_[q] = lattice_.offset(c.x(), c.y(), c.z());
+    }
+
+    if (surface_)
+    {
+        const label nBox = lattice_.nBox();
+        wasWater_.setSize(nBox, false);
+        share_.setSize(nBox, Zero);
+        DynamicList<label> nbr;
+        const label zMax = (d_ == 3 ? 1 : 0);
+        for (label k = -zMax; k <= zMax; ++k)
+        {
+            for (label j = -1; j <= 1; ++j)
+            {
+                for (label i = -1; i <= 1; ++i)
+                {
+                    if (i || j || k)
+                    {
+                        nbr.append(lattice_.offset(i, j, k));
+                    }
+                }
+            }
+        }
+        neighbours_.transfer(nbr);
+        DynamicList<label> halo;
+        const List<unsigned char>& kind = lattice_.kind();
+        forAll(kind, n)
+        {
+            if (kind[n] == latticeMesh::HALO)
+            {
+                halo.append(n);
+            }
+        }
+        haloNodes_.transfer(halo);
     }
 
     forAll(C_, celli)
@@ -591,6 +835,12 @@ void Foam::latticeAdvectionDiffusion::step
     scalarList& g = current();
     lattice_.halo().exchange(g.data(), Q_, nBox);
     fillBoundaries(g.data(), u, porosity);
+    if (surface_)
+    {
+        surfaceLinks(g.data());
+    }
+    const List<latticeMesh::nodeRun>& runs =
+        surface_ ? surface_->runs() : lattice_.runs();
 
     transportStats st;
     const scalar* eps = porosity ? porosity->cdata() : nullptr;
@@ -600,7 +850,7 @@ void Foam::latticeAdvectionDiffusion::step
         streamCollide<2>
         (
             g.cdata(), next().data(), nBox, offset_.cdata(),
-            lattice_.runs(), u.cdata(), eps, S,
+            runs, u.cdata(), eps, S,
             1/tau_, cs2_, st
         );
     }
@@ -609,7 +859,7 @@ void Foam::latticeAdvectionDiffusion::step
         streamCollide<3>
         (
             g.cdata(), next().data(), nBox, offset_.cdata(),
-            lattice_.runs(), u.cdata(), eps, S,
+            runs, u.cdata(), eps, S,
             1/tau_, cs2_, st
         );
     }
@@ -629,6 +879,10 @@ void Foam::latticeAdvectionDiffusion::step
 
 Foam::scalar Foam::latticeAdvectionDiffusion::Phi(const label n) const
 {
+    if (!water(n))
+    {
+        return 0;
+    }
     const scalarList& g = current();
     const label nBox = lattice_.nBox();
     scalar sum = 0;
@@ -679,7 +933,11 @@ Foam::scalar Foam::latticeAdvectionDiffusion::content() const
             sum += Phi(n);
         }
     }
-    return returnReduce(sum*lattice_.cellVolume(), sumOp<scalar>());
+    return returnReduce
+    (
+        sum*lattice_.cellVolume() + stranded_,
+        sumOp<scalar>()
+    );
 }
 
 
@@ -738,7 +996,11 @@ void Foam::latticeAdvectionDiffusion::updateField(const scalarList* porosity)
     forAll(cellNode, celli)
     {
         const label n = cellNode[celli];
-        C[celli] = Phi(n)/(porosity ? (*porosity)[n] : 1);
+        // (per volume of water: an interface node's water fills the
+        // fraction phi of its pores; 0 in the gas)
+        const scalar wet =
+            surface_ ? max(surface_->fill(n), scalar(1e-3)) : 1;
+        C[celli] = Phi(n)/((porosity ? (*porosity)[n] : 1)*wet);
     }
     // (the patch values stay as read: the lattice imposes the patches at
     // the half-way links, and inletOutlet would need a face flux phi)

@@ -38,13 +38,6 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
     {
         return;
     }
-    if (!canUseAnalyticHydrostatic())
-    {
-        FatalErrorInFunction
-            << "the hydrostatic pressure cannot leave the lattice with g"
-            << " along a periodic direction"
-            << abort(FatalError);
-    }
     if (nSteps_ > 0)
     {
         FatalErrorInFunction
@@ -54,7 +47,8 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
 
     // x_top: the mesh's corner highest against g (the pressure is zero
     // there; a tank full to its top at rest then carries p_rgh = 0)
-    const vector g(bodyAcceleration_);
+    // (along periodic directions the weight stays on the lattice)
+    const vector g(hydrostaticAcceleration());
     const boundBox& bb = mesh_.bounds();
     for (direction j = 0; j < 3; ++j)
     {
@@ -189,8 +183,18 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
     }
 
     Info<< "The water's hydrostatic pressure " << units_.rho0() << " g.(x - "
-        << hydrostaticRef_ << ") is off the lattice: it carries p_rgh and no"
-        << " weight" << nl << endl;
+        << hydrostaticRef_ << "), g = " << g << ", is off the lattice: it"
+        << " carries p_rgh and ";
+    if (mag(bodyAcceleration_ - g) > 0)
+    {
+        Info<< "the weight along the periodic directions, "
+            << (bodyAcceleration_ - g) << " m/s2 (it drives the flow)";
+    }
+    else
+    {
+        Info<< "no weight";
+    }
+    Info<< nl << endl;
 }
 
 

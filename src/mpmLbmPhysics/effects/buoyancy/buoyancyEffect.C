@@ -204,17 +204,11 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
 
 void Foam::physicsEffects::buoyancy::start()
 {
+    // (g along a periodic direction: the default keeps the pressure on
+    // the lattice; asked for, the analytic mode takes off the part of g
+    // across the other directions, the lattice keeps the part that drives
+    // the flow)
     const bool can = fluid_.canUseAnalyticHydrostatic();
-    if (requested_ == "analytic" && !can)
-    {
-        FatalIOErrorInFunction(scene_.dict().subDict("buoyancyCoeffs"))
-            << "hydrostatic analytic is not allowed here: constant/g "
-            << fluid_.bodyAcceleration() << " has a component along a"
-            << " periodic direction (cyclic patches), across which the"
-            << " lattice cannot hold a pressure that grows: there the weight"
-            << " drives the flow. Use hydrostatic lattice (the default here)"
-            << exit(FatalIOError);
-    }
     // (water without weight has no hydrostatic pressure to take off: the
     // lattice mode, which it equals, so that a time written before the
     // analytic mode existed restarts)
@@ -369,7 +363,7 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
       ? vector
         (
            -fluid_.units().rho0()*lattice.cellVolume()
-           *fluid_.bodyAcceleration()
+           *fluid_.hydrostaticAcceleration()
         )
       : vector::zero
     );

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "erosionEffect.H"
+#include "freeSurfaceEffect.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
 #include "soilEffect.H"
@@ -166,6 +167,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     ),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(scene.effect<physicsEffects::soil>("soil")),
+    surface_(freeSurface::of(scene)),
     drag_(twoWayDrag(scene, dict_)),
     g_(gravityMagnitude(scene.mesh(), dict_)),
     law_(erosionLaw::New(lawDict(dict_, fluid_, drag_, g_))),
@@ -232,7 +234,8 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
               : word(field + "." + suspensionMaterial_[s]),
                 dict_,
                 fluid_.boundaries(),
-                fluid_.U()
+                fluid_.U(),
+                surface_
             )
         );
     }
@@ -468,8 +471,9 @@ Foam::sceneStageList Foam::physicsEffects::erosion::stages() const
         joined.append(sceneStage::exchange);
     }
     joined.append(sceneStage::transport);
-    if (balanceFile_.valid())
+    if (balanceFile_.valid() || surface_)
     {
+        // (with a free surface: the suspensions follow its conversions)
         joined.append(sceneStage::endStep);
     }
     return joined;
@@ -525,6 +529,11 @@ void Foam::physicsEffects::erosion::erodePoints()
         }
 
         const label n = nodeOf(pts.x[p]);
+        if (surface_ && !surface_->water(n))
+        {
+            // Dry: above the water's surface nothing flows
+            continue;
+        }
 
         const scalar nNode = max(1 - phi[n], 0.01);
         const scalar q = mag(uPhysical_[n] - nNode*soilVelocity[n]);
@@ -634,7 +643,14 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
     }
     else if (stage == sceneStage::endStep)
     {
-        writeBalance();
+        for (latticeAdvectionDiffusion& susp : suspensions_)
+        {
+            susp.followSurface();
+        }
+        if (balanceFile_.valid())
+        {
+            writeBalance();
+        }
     }
 }
 

@@ -161,9 +161,15 @@ void Foam::physicsEffects::erosion::surfaceDemand()
 
     wallShear_ = Zero;
     demand_ = 0;
+    // (with a free surface: only where there is water; a dry surface is
+    // not eroded, and the gas's nodes carry no stress)
+    auto wet = [this](const label a)
+    {
+        return !surface_ || surface_->water(a);
+    };
     for (const label n : lattice.cellNode())
     {
-        if (!(phi_[n] < phiS))
+        if (!(phi_[n] < phiS) || !wet(n))
         {
             continue;
         }
@@ -214,7 +220,7 @@ void Foam::physicsEffects::erosion::surfaceDemand()
         for (label k = 0; k <= 2 && k0 < 0; ++k)
         {
             const label a = n + k*step;
-            if (!inside(a))
+            if (!inside(a) || !wet(a))
             {
                 break;
             }
@@ -238,7 +244,11 @@ void Foam::physicsEffects::erosion::surfaceDemand()
         for (label k = k0; k < k0 + nFit && k <= reach; ++k)
         {
             const label a = n + k*step;
-            if (!inside(a) || (k > k0 && !(phi_[a] < phiClear)))
+            if
+            (
+                !inside(a) || !wet(a)
+             || (k > k0 && !(phi_[a] < phiClear))
+            )
             {
                 break;
             }

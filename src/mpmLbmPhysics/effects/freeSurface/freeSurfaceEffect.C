@@ -41,6 +41,19 @@ Foam::label Foam::physicsEffects::freeSurface::haloWidth(const fvMesh& mesh)
 }
 
 
+const Foam::lbmFreeSurface* Foam::physicsEffects::freeSurface::of
+(
+    physicsScene& scene
+)
+{
+    if (!scene.has("freeSurface"))
+    {
+        return nullptr;
+    }
+    return scene.effect<freeSurface>("freeSurface").fluid_.freeSurface();
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::IOobject Foam::physicsEffects::freeSurface::dictIO
@@ -113,19 +126,6 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
         scene.mesh()
     )
 {
-    // Erosion and a transported scalar do not yet know where the water is
-    for (const word e : {"erosion", "scalarTransport"})
-    {
-        if (scene.has(e))
-        {
-            FatalIOErrorInFunction(scene.dict())
-                << "freeSurface does not combine with " << e << " yet"
-                << " (constant/physicsProperties effects): it would act on"
-                << " the gas as on water." << nl
-                << "    Allowed with freeSurface: fluid, gravity, soil,"
-                << " drag, porousFlow, buoyancy" << exit(FatalIOError);
-        }
-    }
     if (scene.has("porousFlow"))
     {
         // (built first: the free surface starts from its porosity)

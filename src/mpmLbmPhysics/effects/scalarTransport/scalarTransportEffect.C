@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "scalarTransportEffect.H"
+#include "freeSurfaceEffect.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
 #include "addToRunTimeSelectionTable.H"
@@ -58,7 +59,8 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
         dict_.getOrDefault<word>("field", "C"),
         dict_,
         fluid_.boundaries(),
-        fluid_.U()
+        fluid_.U(),
+        freeSurface::of(scene)
     ),
     u_(fluid_.lattice().nBox(), Zero)
 {
@@ -115,8 +117,9 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
 Foam::sceneStageList Foam::physicsEffects::scalarTransport::stages() const
 {
     sceneStageList joined({sceneStage::transport});
-    if (balanceFile_.valid())
+    if (balanceFile_.valid() || transport_.surface())
     {
+        // (with a free surface: the scalar follows its conversions)
         joined.append(sceneStage::endStep);
     }
     return joined;
@@ -144,7 +147,11 @@ void Foam::physicsEffects::scalarTransport::evolve(const sceneStage stage)
     }
     else if (stage == sceneStage::endStep)
     {
-        writeBalance();
+        transport_.followSurface();
+        if (balanceFile_.valid())
+        {
+            writeBalance();
+        }
     }
 }
 
