@@ -296,6 +296,31 @@ void Foam::latticeAdvectionDiffusion::buildLinks
         }
     }
 
+    // Links into solid bodies: closed (the kernel does not run inside them)
+    if (bodies_)
+    {
+        for (const label n : cellNode)
+        {
+            if (bodies_->solid(n))
+            {
+                continue;
+            }
+            for (label q = 1; q < Q_; ++q)
+            {
+                if (bodies_->solid(n + offset_[q]))
+                {
+                    node.append(n);
+                    dir.append(q);
+                    patch.append(-1);
+                    kind.append(CLOSED);
+                    value.append(0);
+                    velocity.append(0);
+                    nodeVelocity.append(false);
+                }
+            }
+        }
+    }
+
     linkNode_.transfer(node);
     linkDir_.transfer(dir);
     linkPatch_.transfer(patch);
@@ -386,9 +411,10 @@ void Foam::latticeAdvectionDiffusion::initialise
         {
             WarningInFunction
                 << C_.objectPath() << ": " << C_.name() << " is positive in "
-                << returnReduce(nDry, sumOp<label>()) << " cells of the gas"
-                << " (alpha.water 0): the scalar lives in the water only,"
-                << " and starts at 0 there" << endl;
+                << returnReduce(nDry, sumOp<label>()) << " cells outside"
+                << " the water (the gas, alpha.water 0, or a solid body):"
+                << " the scalar lives in the water only, and starts at 0"
+                << " there" << endl;
         }
     }
 
@@ -535,8 +561,8 @@ void Foam::latticeAdvectionDiffusion::followSurface()
 
     // Nodes the water reached start empty; nodes it left give their
     // scalar, in equal shares, to their water neighbours (the fluid's
-    // conversion leaves every emptied node at least one: a liquid
-    // neighbour turns interface)
+    // conversion leaves every emptied node at least one: an interface
+    // neighbour, or a liquid one that turns interface)
     givers_.clear();
     for (const label n : lattice_.cellNode())
     {
@@ -570,9 +596,13 @@ void Foam::latticeAdvectionDiffusion::followSurface()
                 }
             }
         }
+        // (both lattices: the other holds this node's older populations,
+        // which a restart would not have)
+        scalarList& other = AisCurrent_ ? gB_ : gA_;
         for (label q = 0; q < Q_; ++q)
         {
             g[q*nBox + n] = 0;
+            other[q*nBox + n] = 0;
         }
         wasWater_[n] = now;
     }
@@ -588,7 +618,11 @@ void Foam::latticeAdvectionDiffusion::followSurface()
         for (const label o : neighbours_)
         {
             const label y = x + o;
-            if (kind[y] == latticeMesh::OWNED && surface_->water(y))
+            if
+            (
+                y >= 0 && y < nBox && kind[y] == latticeMesh::OWNED
+             && surface_->water(y)
+            )
             {
                 g[y] += w0*s;
                 for (label q = 1; q < Q_; ++q)
@@ -706,7 +740,8 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
     const dictionary& dict,
     const lbmBoundaries& water,
     const volVectorField& U,
-    const lbmFreeSurface* surface
+    const lbmFreeSurface* surface,
+    const lbmObstacles* bodies
 )
 :
     lattice_(lattice),
@@ -741,7 +776,8 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
     nSteps_(0),
     initialised_(false),
     surface_(surface),
-    stranded_(0)
+    stranded_(0),
+    bodies_(bodies && !bodies->empty() ? bodies : nullptr)
 {
     setRelaxation(dict);
 
@@ -840,7 +876,9 @@ void Foam::latticeAdvectionDiffusion::step
         surfaceLinks(g.data());
     }
     const List<latticeMesh::nodeRun>& runs =
-        surface_ ? surface_->runs() : lattice_.runs();
+        surface_ ? surface_->runs()
+      : bodies_ ? bodies_->runs()
+      : lattice_.runs();
 
     transportStats st;
     const scalar* eps = porosity ? porosity->cdata() : nullptr;
@@ -1015,12 +1053,21 @@ void Foam::latticeAdvectionDiffusion::writePopulations() const
     }
     const label nBox = lattice_.nBox();
     const scalarList& g = current();
+    // (outside the water 0: the gas's slots hold the bounce-back of the
+    // last step, which nothing reads)
+    scalarList gq(surface_ || bodies_ ? nBox : 0, Zero);
     for (label q = 0; q < Q_; ++q)
     {
-        writeNodeField
-        (
-            lattice_, C_.name() + "G" + Foam::name(q), g.cdata() + q*nBox
-        );
+        const scalar* data = g.cdata() + q*nBox;
+        if (gq.size())
+        {
+            for (const label n : lattice_.cellNode())
+            {
+                gq[n] = water(n) ? data[n] : 0;
+            }
+            data = gq.cdata();
+        }
+        writeNodeField(lattice_, C_.name() + "G" + Foam::name(q), data);
     }
 }
 

@@ -12,7 +12,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 // The water's hydrostatic pressure off the lattice: the lattice carries
-// p_rgh = p - rho_0 g.(x - x_top) and no weight
+// p_rgh = p - rho_0 g_h.(x - x_top) and no weight but g - g_h (g_h the part
+// of g across the directions that are not periodic)
 
 #include "latticeBoltzmannFluid.H"
 #include "OFstream.H"

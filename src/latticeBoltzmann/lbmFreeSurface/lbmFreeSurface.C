@@ -509,7 +509,8 @@ Foam::lbmFreeSurface::gasAtSurface Foam::lbmFreeSurface::gasState
         // The populations carry p_rgh = p - p_h: the gas pressure at the
         // surface less p_h there (p_h linear: 3 g.d of lattice density
         // over d), carried from there with the rest of the slow flow's
-        // gradient (the lattice's g is then zero). The sum at the link's
+        // gradient (the lattice's g then holds only a weight along
+        // periodic directions). The sum at the link's
         // middle is the gas pressure carried as above with rho_0 g + F_d
         gs.rho -=
             units_.rhoLattice((*hydrostatic_)[x]) - 1

@@ -207,8 +207,24 @@ void Foam::physicsEffects::buoyancy::start()
     // (g along a periodic direction: the default keeps the pressure on
     // the lattice; asked for, the analytic mode takes off the part of g
     // across the other directions, the lattice keeps the part that drives
-    // the flow)
+    // the flow; with g along periodic directions only there is nothing to
+    // take off)
     const bool can = fluid_.canUseAnalyticHydrostatic();
+    if
+    (
+        requested_ == "analytic"
+     && mag(fluid_.bodyAcceleration()) > 0
+     && !(mag(fluid_.hydrostaticAcceleration()) > 0)
+    )
+    {
+        FatalIOErrorInFunction(scene_.dict().subDict("buoyancyCoeffs"))
+            << "hydrostatic analytic has nothing to take off here: constant/g "
+            << fluid_.bodyAcceleration() << " lies along periodic directions"
+            << " only (cyclic patches), across which the lattice cannot hold"
+            << " a pressure that grows: there the weight drives the flow."
+            << " Use hydrostatic lattice (the default here)"
+            << exit(FatalIOError);
+    }
     // (water without weight has no hydrostatic pressure to take off: the
     // lattice mode, which it equals, so that a time written before the
     // analytic mode existed restarts)
@@ -226,7 +242,7 @@ void Foam::physicsEffects::buoyancy::start()
           ? can && !fluid_.freeSurface()
           : requested_ == "analytic"
         )
-     && mag(fluid_.bodyAcceleration()) > 0;
+     && mag(fluid_.hydrostaticAcceleration()) > 0;
 
     // A restart continues in the mode its populations were written with
     // (a time without lbmHydrostatic: the lattice carried the whole
@@ -257,7 +273,8 @@ void Foam::physicsEffects::buoyancy::start()
         << (
                analytic_
              ? "the hydrostatic pressure analytic (the lattice carries p_rgh"
-               " = p - rho_w g.(x - x_top))"
+               " = p - rho_w g_h.(x - x_top), g_h the part of g across the"
+               " directions that are not periodic)"
              : mag(fluid_.bodyAcceleration()) > 0
              ? "the hydrostatic pressure on the lattice"
              : "no hydrostatic pressure (the water has no weight)"
@@ -294,8 +311,8 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
     const lbmLayout& layout = fluid_.layout();
     const scalarList& eps = fluid_.porosity();
     const labelList& cellNode = lattice.cellNode();
-    // (the weight the lattice applies: none with the hydrostatic pressure
-    // off the lattice)
+    // (the weight the lattice applies: with the hydrostatic pressure off
+    // the lattice only the part along periodic directions, if any)
     const vector g = fluid_.latticeAcceleration();
 
     // Pore pressure c_s^2 (rho - 1)/n (lattice units, relative to the

@@ -235,7 +235,8 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
                 dict_,
                 fluid_.boundaries(),
                 fluid_.U(),
-                surface_
+                surface_,
+                &fluid_.obstacles()
             )
         );
     }
@@ -539,7 +540,10 @@ void Foam::physicsEffects::erosion::erodePoints()
         const scalar q = mag(uPhysical_[n] - nNode*soilVelocity[n]);
         const scalar K = drag_.hydraulicConductivity(phi[n], g_);
         const scalar i = K < VGREAT ? q/K : 0;
-        const scalar c = Phi(n)/nNode/rhoS;
+        // (per volume of pore water: an interface node's water fills the
+        // fraction of its pores its fill level gives)
+        const scalar wet = wetFraction(n);
+        const scalar c = Phi(n)/(nNode*wet)/rhoS;
 
         const scalar m = pts.m[p];
         const scalar rate =
@@ -552,7 +556,7 @@ void Foam::physicsEffects::erosion::erodePoints()
             sourced += source[n];
         }
         const scalar room =
-            (maxConcentration_*nNode - Phi(n) - sourced)*Vcell;
+            (maxConcentration_*nNode*wet - Phi(n) - sourced)*Vcell;
         const scalar dm = min
         (
             min(rate*pts.V[p]*dt, m*(f - fLim)/(1 - fLim)),

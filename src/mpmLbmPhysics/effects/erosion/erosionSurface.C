@@ -276,6 +276,7 @@ void Foam::physicsEffects::erosion::surfaceDemand()
             const scalar room =
                 (
                     maxConcentration_*max(1 - phi_[n], scalar(0.01))
+                   *wetFraction(n)
                   - Phi(n)
                 )*lattice.cellVolume();
             demand_[n] = max

@@ -51,9 +51,15 @@ void Foam::physicsEffects::erosion::filterPoints()
             continue;
         }
         const label n = nodeOf(pts.x[p]);
+        const scalar wet = wetFraction(n);
+        if (!(wet > 0))
+        {
+            // Dry: no suspension to catch
+            continue;
+        }
         const scalar nNode = max(1 - phi[n], 0.01);
         const scalar q = mag(uPhysical_[n] - nNode*soilVelocity[n]);
-        const scalar C = Phi(n)/nNode;
+        const scalar C = Phi(n)/(nNode*wet);
         const scalar m = pts.m[p];
         const scalar dm = min
         (

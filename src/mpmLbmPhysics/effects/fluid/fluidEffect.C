@@ -32,23 +32,28 @@ Foam::physicsEffects::fluid::fluid(physicsScene& scene)
     physicsEffect(scene),
     lbm_(scene.lattice())
 {
-    // Bodies in the water are for the water alone: the couplings do not
-    // know their solid nodes yet
+    // Bodies in the water are for the water and what it carries alone
+    // (a transported scalar closes its links into them): the couplings
+    // with the soil do not know their solid nodes yet
     if (!lbm_.obstacles().empty())
     {
         const wordList effects(scene.dict().get<wordList>("effects"));
+        const wordList allowed
+        ({
+            "fluid", "gravity", "freeSurface", "scalarTransport"
+        });
         for (const word& e : effects)
         {
-            if (e != "fluid" && e != "gravity" && e != "freeSurface")
+            if (!allowed.found(e))
             {
                 FatalIOErrorInFunction(lbm_.dict())
                     << "obstacles " << lbm_.obstacles().names()
                     << " are for the water alone: the scene's effect " << e
                     << " (constant/physicsProperties effects " << effects
                     << ") does not take bodies in the water into account."
-                    << nl << "    Use effects (fluid) or (fluid gravity) with"
-                    << " obstacles, or give the body as cells missing from"
-                    << " the mesh" << exit(FatalIOError);
+                    << nl << "    Allowed with obstacles: " << allowed
+                    << "; or give the body as cells missing from the mesh"
+                    << exit(FatalIOError);
             }
         }
     }

@@ -60,7 +60,8 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
         dict_,
         fluid_.boundaries(),
         fluid_.U(),
-        freeSurface::of(scene)
+        freeSurface::of(scene),
+        &fluid_.obstacles()
     ),
     u_(fluid_.lattice().nBox(), Zero)
 {
