@@ -125,6 +125,18 @@ class Lattice(object):
         return self.lo[d] + self.dx * np.arange(self.n[d])
 
 
+def case_and_png(argv):
+    """The case directory (default '.') and the picture's file of a
+    script's command line CASE [--png FILE] (None without --png)."""
+    args = list(argv)
+    png = None
+    if '--png' in args:
+        i = args.index('--png')
+        png = args[i + 1]
+        del args[i:i + 2]
+    return (args[0] if args else '.'), png
+
+
 def check(ok, what, value=None):
     """Print a PASS:/FAIL: line; return ok."""
     suffix = '' if value is None else ' (%s)' % value

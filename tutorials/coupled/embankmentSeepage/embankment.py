@@ -153,13 +153,7 @@ def exit_height(lat, a):
 
 
 def main():
-    args = sys.argv[1:]
-    png = None
-    if '--png' in args:
-        i = args.index('--png')
-        png = args[i + 1]
-        del args[i:i + 2]
-    case = args[0] if args else '.'
+    case, png = foamio.case_and_png(sys.argv[1:])
     lat, ts, rows = read(case)
     t, q, h1 = rows[-1]
     qMean = q.mean()

@@ -53,13 +53,7 @@ def levee(case, t):
 
 
 def main():
-    args = sys.argv[1:]
-    png = None
-    if '--png' in args:
-        i = args.index('--png')
-        png = args[i + 1]
-        del args[i:i + 2]
-    case = args[0] if args else '.'
+    case, png = foamio.case_and_png(sys.argv[1:])
 
     times = foamio.times(case)
     rows = np.loadtxt(os.path.join(case, 'postProcessing', 'erosion', '0',

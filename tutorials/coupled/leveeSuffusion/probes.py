@@ -24,6 +24,9 @@ import re
 import sys
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.environ['MPMLBM_PROJECT_DIR'], 'tests', 'lib'))
+import foamio   # noqa: E402  (the project's reader of OpenFOAM's files)
+
 DEPTH = 0.02                       # the case's thickness (blockMeshDict)
 # The water starts from rest under the full head: pressure waves cross the
 # lattice for the first seconds (the meters sample them every 0.25 s)
@@ -51,13 +54,7 @@ def series(case, name, file):
 
 
 def main():
-    args = sys.argv[1:]
-    png = None
-    if '--png' in args:
-        i = args.index('--png')
-        png = args[i + 1]
-        del args[i:i + 2]
-    case = args[0] if args else '.'
+    case, png = foamio.case_and_png(sys.argv[1:])
     flow = series(case, 'seepageMeter', 'surfaceFieldValue.dat')
     piezo = series(case, 'piezometers', 'p')
     balance = series(case, 'erosion', 'erosion.dat')
