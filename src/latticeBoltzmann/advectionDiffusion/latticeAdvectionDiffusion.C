@@ -296,7 +296,9 @@ void Foam::latticeAdvectionDiffusion::buildLinks
         }
     }
 
-    // Links into solid bodies: closed (the kernel does not run inside them)
+    // Links into solid bodies: closed (the kernel does not run inside them;
+    // a boundary's node a body covers keeps its patch's link, as the
+    // water's does)
     if (bodies_)
     {
         for (const label n : cellNode)
@@ -307,7 +309,8 @@ void Foam::latticeAdvectionDiffusion::buildLinks
             }
             for (label q = 1; q < Q_; ++q)
             {
-                if (bodies_->solid(n + offset_[q]))
+                const label s = n + offset_[q];
+                if (nodeKind[s] != latticeMesh::WALL && bodies_->solid(s))
                 {
                     node.append(n);
                     dir.append(q);

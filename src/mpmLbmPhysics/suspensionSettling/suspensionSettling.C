@@ -118,8 +118,11 @@ void Foam::suspensionSettling::update
     const scalar rhoS = m.rhoSolid();
     for (const label n : s.lattice().cellNode())
     {
-        const scalar eps = porosity ? (*porosity)[n] : 1;
-        // (Phi = n C: the suspension per volume of mixture)
+        // (Phi = n C phi_w: the suspension per volume of mixture, phi_w
+        // the share of the pores that holds water, 1 without a free
+        // surface; nothing settles outside the water)
+        const scalar wet = s.wetFraction(n);
+        const scalar eps = (porosity ? (*porosity)[n] : 1)*max(wet, SMALL);
         const scalar Phi = mixturePhi ? (*mixturePhi)[n] : s.Phi(n);
         const scalar phi = m.hindered() ? Phi/(eps*rhoS) : 0;
         ws_[n] = (m.velocity(phi)*toLattice_)*down_;

@@ -128,8 +128,8 @@ def main():
     ax.legend(fontsize=8)
     ax = fig.add_subplot(4, 2, 8)
     ax.plot(summary[:, 0], summary[:, 4], 'o-', label='crest height [m]')
-    ax.plot(summary[:, 0], summary[:, 5] - 1.2, 's-',
-            label='slope\'s retreat at y = 0.2 m [m]')
+    ax.plot(summary[:, 0], summary[:, 5] - summary[0, 5], 's-',
+            label='slope\'s advance at y = 0.2 m [m] (negative: retreat)')
     if len(tIn):
         ax2 = ax.twinx()
         ax2.plot(tIn, -qIn, 'g', lw=0.8, label='overflow q in [m2/s]')
