@@ -105,6 +105,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     ),
     collision_(collisionModel::New(dict_, velocitySet_())),
     bodyAcceleration_(Zero),
+    latticeAcceleration_(Zero),
     machLimit_(dict_.getOrDefault<scalar>("machLimit", 0.5)),
     smagorinsky_(dict_.getOrDefault<scalar>("smagorinskyConstant", 0)),
     writeStress_(dict_.getOrDefault<bool>("writeViscousStress", false)),

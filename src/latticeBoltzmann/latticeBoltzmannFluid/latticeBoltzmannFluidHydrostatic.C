@@ -20,6 +20,17 @@ License
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::latticeBoltzmannFluid::updateLatticeAcceleration()
+{
+    latticeAcceleration_ = units_.accelerationToLattice
+    (
+        hydrostatic_.size()
+      ? vector(bodyAcceleration_ - hydrostaticAcceleration())
+      : bodyAcceleration_
+    );
+}
+
+
 bool Foam::latticeBoltzmannFluid::canUseAnalyticHydrostatic() const
 {
     for (direction j = 0; j < 3; ++j)
@@ -107,6 +118,7 @@ void Foam::latticeBoltzmannFluid::useAnalyticHydrostatic()
         }
     }
     hydrostatic_.setSize(lattice_.nBox(), 0.0);
+    updateLatticeAcceleration();
     forAll(cellNode, celli)
     {
         hydrostatic_[cellNode[celli]] =
