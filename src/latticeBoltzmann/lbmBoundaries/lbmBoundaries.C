@@ -165,6 +165,27 @@ void Foam::lbmBoundaries::classifyPatches
                     orOp<bool>()
                 );
             patchKinds_[patchi] = moving ? MOVINGWALL : WALL;
+            if (Utype == "movingWallVelocity")
+            {
+                // A wall that moves along its normal on a fixed mesh is a
+                // flow through it (OpenFOAM's movingWallVelocity keeps the
+                // value on a static mesh, as fixedValue): say so, it is
+                // seldom what a wall was meant to do (a closed channel
+                // whose lid had a normal component lost a fifth of its
+                // water without a word)
+                const fvPatchVectorField& Up = U.boundaryField()[patchi];
+                const scalar un = gMax(mag(Up & Up.patch().nf())());
+                if (un > 1e-9*max(gMax(mag(Up)()), VSMALL))
+                {
+                    WarningInFunction
+                        << "Patch " << pp.name() << " of 0/U:"
+                        << " movingWallVelocity has a velocity of up to "
+                        << un << " m/s along the patch's normal: the"
+                        << " lattice lets that flow through the wall (an"
+                        << " inflow or outflow, as fixedValue). A wall that"
+                        << " slides moves in its own plane." << endl;
+                }
+            }
         }
         else if (slipTypes.found(Utype))
         {
@@ -297,7 +318,8 @@ Foam::lbmBoundaries::lbmBoundaries
     hydroRhoGrad_(Zero),
     hydroRef_(Zero),
     gasPressure_(-GREAT),
-    nUnclassified_(0)
+    nUnclassified_(0),
+    varyingStartSet_(false)
 {
     classifyPatches(U, p, units);
 

@@ -334,7 +334,33 @@ void Foam::lbmBoundaries::update
 )
 {
     // The patches' Function1 at the current time (every processor, also
-    // one with no link on them: the fields' patch values stay consistent)
+    // one with no link on them: the fields' patch values stay consistent).
+    // The step runs from t - dt to t: the links take each patch's value at
+    // the step's middle, the mean of its values at both ends (second order
+    // in time; with the value at t a sinusoidal wall led Stokes' second
+    // problem by dt/2 on every grid, a first-order error in dx where dt
+    // follows dx). The fields keep the value at t, as a run writes it and
+    // function objects read it.
+    if (!varyingStartSet_)
+    {
+        // (the values the fields were built with: the start time's)
+        varyingStartU_.setSize(varying_.size());
+        varyingStartP_.setSize(varying_.size());
+        forAll(varying_, patchi)
+        {
+            if (varying_[patchi] && patchKinds_[patchi] == PRESSURE)
+            {
+                varyingStartP_[patchi] = p.boundaryField()[patchi];
+            }
+            else if (varying_[patchi])
+            {
+                varyingStartU_[patchi] = U.boundaryField()[patchi];
+            }
+        }
+        varyingStartSet_ = true;
+    }
+    List<vectorField> endU(varying_.size());
+    List<scalarField> endP(varying_.size());
     forAll(varying_, patchi)
     {
         if (!varying_[patchi])
@@ -343,11 +369,17 @@ void Foam::lbmBoundaries::update
         }
         if (patchKinds_[patchi] == PRESSURE)
         {
-            p.boundaryFieldRef()[patchi].evaluate();
+            fvPatchScalarField& pp = p.boundaryFieldRef()[patchi];
+            pp.evaluate();
+            endP[patchi] = pp;
+            pp == 0.5*(varyingStartP_[patchi] + endP[patchi]);
         }
         else
         {
-            U.boundaryFieldRef()[patchi].evaluate();
+            fvPatchVectorField& Up = U.boundaryFieldRef()[patchi];
+            Up.evaluate();
+            endU[patchi] = Up;
+            Up == 0.5*(varyingStartU_[patchi] + endU[patchi]);
         }
     }
 
@@ -368,6 +400,21 @@ void Foam::lbmBoundaries::update
         if (abbHydro_.size())
         {
             abbRho_[i] -= abbHydro_[i];
+        }
+    }
+
+    // (the fields back at the value at t, the start of the next step)
+    forAll(varying_, patchi)
+    {
+        if (varying_[patchi] && patchKinds_[patchi] == PRESSURE)
+        {
+            p.boundaryFieldRef()[patchi] == endP[patchi];
+            varyingStartP_[patchi].transfer(endP[patchi]);
+        }
+        else if (varying_[patchi])
+        {
+            U.boundaryFieldRef()[patchi] == endU[patchi];
+            varyingStartU_[patchi].transfer(endU[patchi]);
         }
     }
 

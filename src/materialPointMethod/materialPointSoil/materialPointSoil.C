@@ -231,11 +231,16 @@ void Foam::materialPointSoil::updateConstitutive
 }
 
 
+Foam::scalar Foam::materialPointSoil::gravityRampFactor() const
+{
+    return
+        (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
+}
+
+
 Foam::vector Foam::materialPointSoil::rampedGravity() const
 {
-    const scalar ramp =
-        (gravityRamp_ > 0 && time_ < gravityRamp_) ? time_/gravityRamp_ : 1;
-    return ramp*gravity_;
+    return gravityRampFactor()*gravity_;
 }
 
 

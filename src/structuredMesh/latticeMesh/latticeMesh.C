@@ -48,10 +48,13 @@ void Foam::latticeMesh::checkUniform()
     }
     if (nDim_ == 2 && solD.z() != -1)
     {
+        // (solutionD: -1 marks the empty direction)
+        const char* axis = (solD.x() == -1 ? "x" : "y");
         FatalErrorInFunction
             << "The mesh of " << mesh_.time().path() << " is 2D with its"
-            << " empty direction " << solD << " not z. A 2D scene must be one"
-            << " cell thick in z with empty patches on the z faces."
+            << " empty direction along " << axis << ", not z. A 2D scene"
+            << " must be one cell thick in z with empty patches on the z"
+            << " faces (blockMesh: the plane in x and y, one cell in z)."
             << exit(FatalError);
     }
 

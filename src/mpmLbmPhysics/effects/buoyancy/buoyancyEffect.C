@@ -384,6 +384,18 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         )
       : vector::zero
     );
+    // While the soil's gravity grows over soilProperties' gravityRamp, its
+    // uplift grows with it: the water is hydrostatic from the start, and
+    // its full lift -phi rho_w g on a soil of a fraction of its weight
+    // floated the soil early in the ramp (at half the ramp the effective
+    // stress was 19.5% of the buoyant weight, not 50%, and the layer kept
+    // a heave). Only the hydrostatic part is scaled: a seepage's pressure
+    // gradient acts whole.
+    const vector liftWithheld
+    (
+        (1 - soil_.gravityRampFactor())*fluid_.units().rho0()
+       *lattice.cellVolume()*fluid_.hydrostaticAcceleration()
+    );
     soilForce_ = Zero;
     maxForce_ = 0;
     for (const label n : cellNode)
@@ -399,7 +411,7 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
         {
             soilForce_[n] =
                 (toNewton*phi*wet)*cmptMultiply(gradScale_[n], D)
-              + (phi*wet)*archimedes;
+              + (phi*wet)*(archimedes + liftWithheld);
             maxForce_ = max(maxForce_, mag(soilForce_[n]));
         }
     }
