@@ -473,6 +473,73 @@ void Foam::soilWalls::buildContacts()
     }
     contactNormal_.transfer(cnormal);
     contactFriction_.transfer(cmu);
+    contactImpulse_.setSize(contactNode_.size(), 0);
+}
+
+
+void Foam::soilWalls::buildFrictionGhosts()
+{
+    bool any = false;
+    forAll(patchWall_, patchi)
+    {
+        any = any || patchWall_[patchi] == wallType::friction;
+    }
+    hasFriction_ = returnReduce(any, orOp<bool>());
+    ghostFrictionNode_.setSize(ghostNode_.size(), -1);
+    ghostFrictionAxis_.setSize(ghostNode_.size(), -1);
+    if (!hasFriction_)
+    {
+        return;
+    }
+
+    // A ghost mirrored across a face along axis d lies 2k - 1 nodes from
+    // its image along d (k its layer beyond that face), and the node
+    // before the face k - 1 nodes from the image towards it. A ghost
+    // beyond one friction face (and maybe slip or noSlip faces along other
+    // axes: a corner) meets the contact of that face; beyond two friction
+    // faces it copies its image as before.
+    const List<labelList> sidePatch(sidePatches());
+    forAll(ghostNode_, i)
+    {
+        if (ghostSource_[i] == ghostNode_[i])
+        {
+            continue;
+        }
+        const labelVector src = lattice_.boxIjk(ghostSource_[i]);
+        const labelVector delta = ghostIjk_[i] - src;
+        label node = -1, axis = -1, nFriction = 0;
+        for (direction d = 0; d < 3; ++d)
+        {
+            const label len = mag(delta[d]);
+            if (len % 2 == 0)
+            {
+                continue;
+            }
+            const label e = delta[d] > 0 ? 1 : -1;
+            labelVector wall(src);
+            wall[d] += e*(len - 1)/2;
+            const label n = lattice_.node(wall.x(), wall.y(), wall.z());
+            const label patchi = sidePatch[2*d + (e > 0 ? 1 : 0)][n];
+            if (patchi >= 0 && patchWall_[patchi] == wallType::friction)
+            {
+                node = n;
+                axis = d;
+                ++nFriction;
+            }
+        }
+        if (nFriction == 1)
+        {
+            ghostFrictionNode_[i] = node;
+            ghostFrictionAxis_[i] = axis;
+        }
+    }
+    const label nBox = lattice_.nBox();
+    for (direction a = 0; a < 3; ++a)
+    {
+        frictionMomentum_[a].setSize(nBox, Zero);
+        frictionForce_[a].setSize(nBox, Zero);
+    }
+    contactState_.setSize(nBox, -vector::one);
 }
 
 
@@ -522,23 +589,43 @@ Foam::soilWalls::soilWalls
     (
         returnReduce(lattice.mesh().nCells(), sumOp<label>())
       < lattice.globalN().x()*lattice.globalN().y()*lattice.globalN().z()
-    )
+    ),
+    hasFriction_(false)
 {
     readWalls(walls);
     buildGhosts();
     buildContacts();
+    buildFrictionGhosts();
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::soilWalls::fold(List<vector>& values, const nodeBox& box) const
+void Foam::soilWalls::foldVectors
+(
+    List<vector>& values,
+    const nodeBox& box,
+    List<vector>* kept
+) const
 {
     // The grid beyond a wall is the mirror image of the grid inside: what
     // the points gave to a node beyond the wall belongs, mirrored, to its
     // image inside (as if the points had mirror images beyond the wall).
     // Without this the nodes beyond a slip wall would carry part of the
     // weight of the points next to it: a spurious friction.
+    const bool keep = kept && hasFriction_;
+    if (keep)
+    {
+        // (at every friction ghost's image, not only the box's: the
+        // halo's addToOwners adds to them)
+        forAll(ghostFrictionNode_, i)
+        {
+            if (ghostFrictionNode_[i] >= 0)
+            {
+                kept[ghostFrictionAxis_[i]][ghostSource_[i]] = Zero;
+            }
+        }
+    }
     for (const label i : ghostsIn(box))
     {
         const label w = ghostNode_[i];
@@ -546,9 +633,21 @@ void Foam::soilWalls::fold(List<vector>& values, const nodeBox& box) const
         if (src != w)
         {
             values[src] += cmptMultiply(ghostSign_[i], values[w]);
+            if (keep && ghostFrictionNode_[i] >= 0)
+            {
+                kept[ghostFrictionAxis_[i]][src] +=
+                    cmptMultiply(ghostSign_[i], values[w]);
+            }
         }
         values[w] = Zero;
     }
+}
+
+
+void Foam::soilWalls::fold(List<vector>& values, const nodeBox& box) const
+{
+    // (the forces: what friction ghosts gave kept for the contact)
+    foldVectors(values, box, frictionForce_);
 }
 
 
@@ -575,8 +674,8 @@ void Foam::soilWalls::fold
 ) const
 {
     // (an image is never itself beyond a wall: the two folds are
-    // independent)
-    fold(values, box);
+    // independent; the momentum's friction ghosts kept for the contact)
+    foldVectors(values, box, frictionMomentum_);
     fold(mass, box);
 }
 
@@ -585,7 +684,101 @@ void Foam::soilWalls::mirror(List<vector>& vel, const nodeBox& box) const
 {
     for (const label i : ghostsIn(box))
     {
-        vel[ghostNode_[i]] = cmptMultiply(ghostSign_[i], vel[ghostSource_[i]]);
+        vector v(cmptMultiply(ghostSign_[i], vel[ghostSource_[i]]));
+        const label n = hasFriction_ ? ghostFrictionNode_[i] : -1;
+        if (n >= 0)
+        {
+            // A closed friction contact: the face holds along the normal
+            const direction a = ghostFrictionAxis_[i];
+            if (contactState_[n][a] >= 0)
+            {
+                v[a] = -v[a];
+            }
+        }
+        vel[ghostNode_[i]] = v;
+    }
+}
+
+
+void Foam::soilWalls::closeContacts
+(
+    List<vector>& momentum,
+    List<vector>* force,
+    const scalarList& mass,
+    const nodeBox& box,
+    const scalar dt,
+    const bool decide,
+    List<vector>* velOld
+) const
+{
+    if (!hasFriction_)
+    {
+        return;
+    }
+    // Coulomb contact at the face of a friction wall (Bardenhagen,
+    // Brackbill & Sulsky 2000, CMAME 187, 529). The folds gave the node
+    // what its ghosts received, unmirrored (the soil as if the wall were
+    // not there); the slip mirror would have reversed the normal part, a
+    // velocity change of -2 G.n, G what the ghosts gave per the node's
+    // mass over the step. A wall only pushes: closed where that change
+    // points off the wall, and then the node's momentum and force are the
+    // slip mirror's (everything after, the damping too, sees the wall).
+    const labelVector& boxN = lattice_.boxN();
+    for (const label i : contactsIn(box))
+    {
+        const label n = contactNode_[i];
+        const vector& nw = contactNormal_[i];
+        const direction a = (nw.x() != 0 ? 0 : (nw.y() != 0 ? 1 : 2));
+        scalar& state = contactState_[n][a];
+        if (decide)
+        {
+            state = -1;
+            contactImpulse_[i] = 0;
+            if (mass[n] <= VSMALL)
+            {
+                continue;
+            }
+            const scalar gn =
+                (frictionMomentum_[a][n] + dt*frictionForce_[a][n]) & nw;
+            if (gn <= 0)
+            {
+                // (the mirror would pull the soil to the wall: open, the
+                // soil off the wall or leaving it)
+                continue;
+            }
+            state = 0;
+            contactImpulse_[i] = 2*gn/mass[n];
+        }
+        if (state < 0)
+        {
+            continue;
+        }
+
+        // The node before the face and, with cubic B-splines, the one
+        // further in that the second layer of ghosts folds into
+        labelVector m(lattice_.boxIjk(n));
+        for (label layer = 0; layer < min(reach_, label(2)); ++layer)
+        {
+            if (layer > 0)
+            {
+                m[a] -= label(nw[a]);
+                if (m[a] < 0 || m[a] >= boxN[a])
+                {
+                    break;
+                }
+            }
+            const label k = lattice_.node(m.x(), m.y(), m.z());
+            const scalar pn = frictionMomentum_[a][k] & nw;
+            momentum[k] -= 2*pn*nw;
+            if (force)
+            {
+                (*force)[k] -= 2*(frictionForce_[a][k] & nw)*nw;
+            }
+            if (velOld && mass[k] > VSMALL)
+            {
+                (*velOld)[k] -= (2*pn/mass[k])*nw;
+            }
+        }
     }
 }
 
@@ -597,27 +790,33 @@ void Foam::soilWalls::applyContact
     const nodeBox& box
 ) const
 {
-    // Coulomb friction at the last node before a friction wall
-    // (Bardenhagen, Brackbill & Sulsky 2000, CMAME 187, 529)
+    if (!hasFriction_)
+    {
+        return;
+    }
+    // Coulomb friction at the closed contacts: the tangential velocity
+    // (the wall at rest) reduced by at most the coefficient times the
+    // normal change the wall made, to rest at most (the soil slides over
+    // the wall as a body: its ghosts copy the tangential velocity, no shear
+    // across the last half cell)
     for (const label i : contactsIn(box))
     {
         const label n = contactNode_[i];
-        if (mass[n] <= VSMALL)
+        const vector& nw = contactNormal_[i];
+        const direction a = (nw.x() != 0 ? 0 : (nw.y() != 0 ? 1 : 2));
+        if (contactState_[n][a] < 0 || mass[n] <= VSMALL)
         {
             continue;
         }
-        const vector& nw = contactNormal_[i];
         vector& v = vel[n];
         const scalar vn = v & nw;
-        if (vn <= 0)
-        {
-            continue;
-        }
-        vector vt = v - vn*nw;
+        const vector vt(v - vn*nw);
         const scalar magVt = mag(vt);
         const scalar reduce =
-            magVt > VSMALL ? max(0.0, 1.0 - contactFriction_[i]*vn/magVt) : 0;
-        v = reduce*vt;
+            magVt > VSMALL
+          ? max(0.0, 1.0 - contactFriction_[i]*contactImpulse_[i]/magVt)
+          : 0;
+        v = vn*nw + reduce*vt;
     }
 }
 
