@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialPointSoil.H"
+#include "unitConversion.H"
 #include "selectEntry.H"
 #include "volFields.H"
 
@@ -175,6 +176,34 @@ inline void Foam::materialPointSoil::pointWeights
 }
 
 
+Foam::string Foam::materialPointSoil::dilationAdvice
+(
+    const label p,
+    const scalar J
+) const
+{
+    // A constant dilation angle dilates a shearing soil for as long as it
+    // shears (no critical state where it stops): the free toe of a layer
+    // sliding down a slope (c = 0, psi 15 or 30 deg) swelled a
+    // thousandfold within about a second; with psi = 0 it slid on
+    const constitutiveModel& model = materials_[points_.material[p]];
+    const scalar psi = model.dilationAngle();
+    if (J <= 1 || psi <= 0 || points_.plasticStrain[p] < 0.1)
+    {
+        return string();
+    }
+    return
+        "\n    The point has sheared plastically (equivalent plastic strain "
+      + Foam::name(points_.plasticStrain[p]) + ") in material "
+      + model.name() + " of dilation angle "
+      + Foam::name(radToDeg(psi)) + " deg: a constant dilation angle"
+        " swells the soil for as long as it shears (no critical state"
+        " where real soil stops dilating), and a cohesionless soil that"
+        " swells at its free surface loses its confinement. For flows of"
+        " large deformation try dilationAngle 0 (or a few degrees).";
+}
+
+
 void Foam::materialPointSoil::volumeRunaway
 (
     const label p,
@@ -199,6 +228,7 @@ void Foam::materialPointSoil::volumeRunaway
         << "or check the loads the couplings put on the soil (an impact"
         << " this fast splashes the points apart). Nothing of this step was"
         << " written."
+        << dilationAdvice(p, J).c_str()
         << exit(FatalError);
 }
 
@@ -490,6 +520,27 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     {
         Info<< "    gravity (constant/g) ramped over " << gravityRamp_ << " s"
             << nl;
+        scalar sigmaMax = 0;
+        for (const symmTensor& sigma : points_.sigma)
+        {
+            sigmaMax = max(sigmaMax, mag(sigma));
+        }
+        reduce(sigmaMax, maxOp<scalar>());
+        if (time_ <= 0 && sigmaMax > 0)
+        {
+            // A stress that carries the soil's whole weight (a geostatic
+            // start) under a gravity that starts from 0: the soil heaves
+            // while the ramp lasts (a 10 m column 5.9 mm, its stress 80%
+            // low at half the ramp)
+            WarningInFunction
+                << "The points start stressed (up to " << sigmaMax
+                << " Pa, e.g. setMaterialPoints' geostatic stress) and"
+                << " soilProperties' gravityRamp " << gravityRamp_
+                << " s grows gravity from 0: the stress lifts the soil"
+                << " until the ramp ends. A geostatic start needs"
+                << " gravityRamp 0; a ramp starts from zero stress."
+                << endl;
+        }
     }
     if (localDamping_ > 0)
     {
