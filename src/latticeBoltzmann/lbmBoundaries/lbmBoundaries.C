@@ -318,8 +318,7 @@ Foam::lbmBoundaries::lbmBoundaries
     hydroRhoGrad_(Zero),
     hydroRef_(Zero),
     gasPressure_(-GREAT),
-    nUnclassified_(0),
-    varyingStartSet_(false)
+    nUnclassified_(0)
 {
     classifyPatches(U, p, units);
 
@@ -627,6 +626,24 @@ Foam::lbmBoundaries::lbmBoundaries
     absorbFace_.transfer(absorbFace);
 
     setMovingValues(U, units);
+
+    // The time-varying patches' values at the start time (or a restart's),
+    // the first step's start (update() takes each step's middle; a field
+    // refreshed after the time advanced, as the porous flow's first
+    // setPorosity does, would give the end's)
+    varyingStartU_.setSize(varying_.size());
+    varyingStartP_.setSize(varying_.size());
+    forAll(varying_, patchi)
+    {
+        if (varying_[patchi] && patchKinds_[patchi] == PRESSURE)
+        {
+            varyingStartP_[patchi] = p.boundaryField()[patchi];
+        }
+        else if (varying_[patchi])
+        {
+            varyingStartU_[patchi] = U.boundaryField()[patchi];
+        }
+    }
 }
 
 

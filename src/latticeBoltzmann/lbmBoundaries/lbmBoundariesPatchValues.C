@@ -341,24 +341,6 @@ void Foam::lbmBoundaries::update
     // problem by dt/2 on every grid, a first-order error in dx where dt
     // follows dx). The fields keep the value at t, as a run writes it and
     // function objects read it.
-    if (!varyingStartSet_)
-    {
-        // (the values the fields were built with: the start time's)
-        varyingStartU_.setSize(varying_.size());
-        varyingStartP_.setSize(varying_.size());
-        forAll(varying_, patchi)
-        {
-            if (varying_[patchi] && patchKinds_[patchi] == PRESSURE)
-            {
-                varyingStartP_[patchi] = p.boundaryField()[patchi];
-            }
-            else if (varying_[patchi])
-            {
-                varyingStartU_[patchi] = U.boundaryField()[patchi];
-            }
-        }
-        varyingStartSet_ = true;
-    }
     List<vectorField> endU(varying_.size());
     List<scalarField> endP(varying_.size());
     forAll(varying_, patchi)

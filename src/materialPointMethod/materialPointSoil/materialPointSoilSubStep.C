@@ -220,6 +220,13 @@ void Foam::materialPointSoil::subStep(const scalar dt)
     const bool usf = (update_ == updateType::USF);
     const bool parallel = Pstream::parRun();
     const haloExchange& halo = lattice_.halo();
+    if (usf && walls_->hasFriction())
+    {
+        // USF's stresses take the old velocity before the forces that
+        // decide the contacts: friction walls open for them (not the last
+        // sub-step's decision, which a restart does not have)
+        walls_->contactState() = -vector::one;
+    }
     p2gMassMomentum(!usf);
     walls_->fold(gridMomentum_, gridMass_, pointsBox_);
     if (!usf)

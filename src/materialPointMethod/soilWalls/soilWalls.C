@@ -159,9 +159,9 @@ void Foam::soilWalls::mirrorSign
 ) const
 {
     // A slip wall reverses the normal component, a noSlip wall every
-    // component. Beyond a friction wall the node copies the node inside,
-    // which thereby carries the whole load on the wall and meets it through
-    // the Coulomb contact
+    // component. Beyond a friction wall the node copies its image (the
+    // soil as if the wall were not there): the contact turns the normal
+    // where it is closed (closeContacts, mirror)
     const wallType wt = patchi >= 0 ? patchWall_[patchi] : wallType::noSlip;
     if (wt == wallType::noSlip)
     {
@@ -485,8 +485,7 @@ void Foam::soilWalls::buildFrictionGhosts()
         any = any || patchWall_[patchi] == wallType::friction;
     }
     hasFriction_ = returnReduce(any, orOp<bool>());
-    ghostFrictionNode_.setSize(ghostNode_.size(), -1);
-    ghostFrictionAxis_.setSize(ghostNode_.size(), -1);
+    ghostFrictionNodes_.setSize(ghostNode_.size(), -labelVector::one);
     if (!hasFriction_)
     {
         return;
@@ -495,9 +494,8 @@ void Foam::soilWalls::buildFrictionGhosts()
     // A ghost mirrored across a face along axis d lies 2k - 1 nodes from
     // its image along d (k its layer beyond that face), and the node
     // before the face k - 1 nodes from the image towards it. A ghost
-    // beyond one friction face (and maybe slip or noSlip faces along other
-    // axes: a corner) meets the contact of that face; beyond two friction
-    // faces it copies its image as before.
+    // beyond friction faces along several axes (a corner, an edge) meets
+    // the contact of each.
     const List<labelList> sidePatch(sidePatches());
     forAll(ghostNode_, i)
     {
@@ -507,7 +505,6 @@ void Foam::soilWalls::buildFrictionGhosts()
         }
         const labelVector src = lattice_.boxIjk(ghostSource_[i]);
         const labelVector delta = ghostIjk_[i] - src;
-        label node = -1, axis = -1, nFriction = 0;
         for (direction d = 0; d < 3; ++d)
         {
             const label len = mag(delta[d]);
@@ -522,15 +519,8 @@ void Foam::soilWalls::buildFrictionGhosts()
             const label patchi = sidePatch[2*d + (e > 0 ? 1 : 0)][n];
             if (patchi >= 0 && patchWall_[patchi] == wallType::friction)
             {
-                node = n;
-                axis = d;
-                ++nFriction;
+                ghostFrictionNodes_[i][d] = n;
             }
-        }
-        if (nFriction == 1)
-        {
-            ghostFrictionNode_[i] = node;
-            ghostFrictionAxis_[i] = axis;
         }
     }
     const label nBox = lattice_.nBox();
@@ -618,11 +608,14 @@ void Foam::soilWalls::foldVectors
     {
         // (at every friction ghost's image, not only the box's: the
         // halo's addToOwners adds to them)
-        forAll(ghostFrictionNode_, i)
+        forAll(ghostFrictionNodes_, i)
         {
-            if (ghostFrictionNode_[i] >= 0)
+            for (direction a = 0; a < 3; ++a)
             {
-                kept[ghostFrictionAxis_[i]][ghostSource_[i]] = Zero;
+                if (ghostFrictionNodes_[i][a] >= 0)
+                {
+                    kept[a][ghostSource_[i]] = Zero;
+                }
             }
         }
     }
@@ -633,10 +626,16 @@ void Foam::soilWalls::foldVectors
         if (src != w)
         {
             values[src] += cmptMultiply(ghostSign_[i], values[w]);
-            if (keep && ghostFrictionNode_[i] >= 0)
+            if (keep)
             {
-                kept[ghostFrictionAxis_[i]][src] +=
-                    cmptMultiply(ghostSign_[i], values[w]);
+                for (direction a = 0; a < 3; ++a)
+                {
+                    if (ghostFrictionNodes_[i][a] >= 0)
+                    {
+                        kept[a][src] +=
+                            cmptMultiply(ghostSign_[i], values[w]);
+                    }
+                }
             }
         }
         values[w] = Zero;
@@ -685,14 +684,16 @@ void Foam::soilWalls::mirror(List<vector>& vel, const nodeBox& box) const
     for (const label i : ghostsIn(box))
     {
         vector v(cmptMultiply(ghostSign_[i], vel[ghostSource_[i]]));
-        const label n = hasFriction_ ? ghostFrictionNode_[i] : -1;
-        if (n >= 0)
+        if (hasFriction_)
         {
-            // A closed friction contact: the face holds along the normal
-            const direction a = ghostFrictionAxis_[i];
-            if (contactState_[n][a] >= 0)
+            // Closed friction contacts: the face holds along its normal
+            for (direction a = 0; a < 3; ++a)
             {
-                v[a] = -v[a];
+                const label n = ghostFrictionNodes_[i][a];
+                if (n >= 0 && contactState_[n][a] >= 0)
+                {
+                    v[a] = -v[a];
+                }
             }
         }
         vel[ghostNode_[i]] = v;
