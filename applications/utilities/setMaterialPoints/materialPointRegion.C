@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialPointRegion.H"
+#include "mathematicalConstants.H"
 #include "Time.H"
 #include "IOobject.H"
 #include "caseChecks.H"
@@ -83,6 +84,41 @@ void Foam::materialPointRegion::readGeostatic
             << " (constant/g, with gravity in the effects of"
             << " constant/physicsProperties)"
             << " in constant/soilProperties" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::materialPointRegion::warnBeyondYield
+(
+    const dictionary& materialDict
+) const
+{
+    // A cohesionless Mohr-Coulomb soil at rest holds sigma_h = K0 sigma_v
+    // only for Ka <= K0 <= Kp, Ka = (1 - sin phi)/(1 + sin phi) = 1/Kp
+    // (both horizontal stresses K0 sigma_v): outside, the geostatic stress
+    // lies beyond the yield surface and the soil yields at its first step
+    if (materialDict.getOrDefault<word>("model", word::null) != "MohrCoulomb")
+    {
+        return;
+    }
+    const dictionary& coeffs = materialDict.optionalSubDict("MohrCoulombCoeffs");
+    const scalar c = coeffs.getOrDefault<scalar>("cohesion", 0);
+    const scalar phi = coeffs.getOrDefault<scalar>("frictionAngle", 0);
+    if (c != 0 || !(phi > 0 && phi < 90))
+    {
+        return;
+    }
+    const scalar s = std::sin(phi*constant::mathematical::pi/180);
+    const scalar Ka = (1 - s)/(1 + s);
+    if (K0_ < Ka*(1 - 1e-9) || K0_ > (1 + 1e-9)/Ka)
+    {
+        WarningInFunction
+            << "Region " << name_ << ": geostatic K0 " << K0_ << " lies"
+            << " outside [Ka, Kp] = [" << Ka << ", " << 1/Ka << "] of its"
+            << " cohesionless Mohr-Coulomb material (frictionAngle " << phi
+            << " deg): the stress starts beyond the yield surface and the"
+            << " soil yields at its first step. Jaky's K0 = 1 - sin(phi) = "
+            << 1 - s << " lies inside." << endl;
     }
 }
 
@@ -170,6 +206,7 @@ Foam::materialPointRegion::materialPointRegion
     if (stress_ == stressType::geostatic)
     {
         readGeostatic(dict_, gravity);
+        warnBeyondYield(materialsDict.subDict(mat));
     }
 }
 

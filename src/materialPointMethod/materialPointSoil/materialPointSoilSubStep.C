@@ -175,41 +175,6 @@ void Foam::materialPointSoil::gridVelocityFromMomentum
 }
 
 
-void Foam::materialPointSoil::exchangeFrictionFolds
-(
-    const bool momentum,
-    const bool force
-)
-{
-    // What the friction ghosts of a processor's halo gave belongs to the
-    // owners' contact nodes, as the momentum and force themselves
-    const haloExchange& halo = lattice_.halo();
-    auto kept = [&](const bool m, const direction a)
-    {
-        return haloExchange::field(walls_->frictionFolded(m, a));
-    };
-    if (momentum && force)
-    {
-        halo.addToOwners
-        (
-            {
-                kept(true, 0), kept(true, 1), kept(true, 2),
-                kept(false, 0), kept(false, 1), kept(false, 2)
-            },
-            haloRoutes()
-        );
-    }
-    else if (momentum || force)
-    {
-        halo.addToOwners
-        (
-            {kept(momentum, 0), kept(momentum, 1), kept(momentum, 2)},
-            haloRoutes()
-        );
-    }
-}
-
-
 void Foam::materialPointSoil::subStep(const scalar dt)
 {
     if (periodic_)
@@ -220,13 +185,6 @@ void Foam::materialPointSoil::subStep(const scalar dt)
     const bool usf = (update_ == updateType::USF);
     const bool parallel = Pstream::parRun();
     const haloExchange& halo = lattice_.halo();
-    if (usf && walls_->hasFriction())
-    {
-        // USF's stresses take the old velocity before the forces that
-        // decide the contacts: friction walls open for them (not the last
-        // sub-step's decision, which a restart does not have)
-        walls_->contactState() = -vector::one;
-    }
     p2gMassMomentum(!usf);
     walls_->fold(gridMomentum_, gridMass_, pointsBox_);
     if (!usf)
@@ -260,25 +218,6 @@ void Foam::materialPointSoil::subStep(const scalar dt)
             );
         }
     }
-    if (parallel && walls_->hasFriction())
-    {
-        // What friction ghosts gave their images, for the contact
-        exchangeFrictionFolds(true, !usf);
-    }
-    if (!usf)
-    {
-        walls_->closeContacts
-        (
-            gridMomentum_, &gridForce_, gridMass_, pointsBox_, dt, true
-        );
-        if (parallel && walls_->hasFriction())
-        {
-            halo.copyToHalo
-            (
-                {haloExchange::field(walls_->contactState())}, haloRoutes()
-            );
-        }
-    }
     gridVelocityFromMomentum(gridVelocityOld_);
     if (parallel && (usf || transfer_ == transferType::FLIP))
     {
@@ -301,32 +240,6 @@ void Foam::materialPointSoil::subStep(const scalar dt)
             (
                 {haloExchange::field(gridForce_)}, haloRoutes()
             );
-            if (walls_->hasFriction())
-            {
-                exchangeFrictionFolds(false, true);
-            }
-        }
-        // (the contacts decided with the force: the old velocity, which
-        // the stresses took, corrected after them)
-        walls_->closeContacts
-        (
-            gridMomentum_, &gridForce_, gridMass_, pointsBox_, dt, true,
-            &gridVelocityOld_
-        );
-        if (walls_->hasFriction())
-        {
-            if (parallel)
-            {
-                halo.copyToHalo
-                (
-                    {
-                        haloExchange::field(walls_->contactState()),
-                        haloExchange::field(gridVelocityOld_)
-                    },
-                    haloRoutes()
-                );
-            }
-            walls_->mirror(gridVelocityOld_, pointsBox_);
         }
     }
 
@@ -407,18 +320,10 @@ void Foam::materialPointSoil::subStep(const scalar dt)
                 haloRoutes()
             );
         }
-        if (parallel && walls_->hasFriction())
-        {
-            exchangeFrictionFolds(true, false);
-        }
-        // (the contacts as the step closed them)
-        walls_->closeContacts
-        (
-            gridMomentum_, nullptr, gridMass_, pointsBox_, dt, false
-        );
         List<vector>& vel = gridVelocityMusl_;
         vel.setSize(gridVelocity_.size(), Zero);
         gridVelocityFromMomentum(vel);
+        walls_->applyContact(vel, gridMass_, pointsBox_);
         if (parallel)
         {
             halo.copyToHalo({haloExchange::field(vel)}, haloRoutes());

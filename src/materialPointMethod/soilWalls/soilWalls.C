@@ -159,9 +159,9 @@ void Foam::soilWalls::mirrorSign
 ) const
 {
     // A slip wall reverses the normal component, a noSlip wall every
-    // component. Beyond a friction wall the node copies its image (the
-    // soil as if the wall were not there): the contact turns the normal
-    // where it is closed (closeContacts, mirror)
+    // component. Beyond a friction wall the node copies the node inside,
+    // which thereby carries the whole load on the wall and meets it through
+    // the Coulomb contact
     const wallType wt = patchi >= 0 ? patchWall_[patchi] : wallType::noSlip;
     if (wt == wallType::noSlip)
     {
@@ -473,63 +473,6 @@ void Foam::soilWalls::buildContacts()
     }
     contactNormal_.transfer(cnormal);
     contactFriction_.transfer(cmu);
-    contactImpulse_.setSize(contactNode_.size(), 0);
-}
-
-
-void Foam::soilWalls::buildFrictionGhosts()
-{
-    bool any = false;
-    forAll(patchWall_, patchi)
-    {
-        any = any || patchWall_[patchi] == wallType::friction;
-    }
-    hasFriction_ = returnReduce(any, orOp<bool>());
-    ghostFrictionNodes_.setSize(ghostNode_.size(), -labelVector::one);
-    if (!hasFriction_)
-    {
-        return;
-    }
-
-    // A ghost mirrored across a face along axis d lies 2k - 1 nodes from
-    // its image along d (k its layer beyond that face), and the node
-    // before the face k - 1 nodes from the image towards it. A ghost
-    // beyond friction faces along several axes (a corner, an edge) meets
-    // the contact of each.
-    const List<labelList> sidePatch(sidePatches());
-    forAll(ghostNode_, i)
-    {
-        if (ghostSource_[i] == ghostNode_[i])
-        {
-            continue;
-        }
-        const labelVector src = lattice_.boxIjk(ghostSource_[i]);
-        const labelVector delta = ghostIjk_[i] - src;
-        for (direction d = 0; d < 3; ++d)
-        {
-            const label len = mag(delta[d]);
-            if (len % 2 == 0)
-            {
-                continue;
-            }
-            const label e = delta[d] > 0 ? 1 : -1;
-            labelVector wall(src);
-            wall[d] += e*(len - 1)/2;
-            const label n = lattice_.node(wall.x(), wall.y(), wall.z());
-            const label patchi = sidePatch[2*d + (e > 0 ? 1 : 0)][n];
-            if (patchi >= 0 && patchWall_[patchi] == wallType::friction)
-            {
-                ghostFrictionNodes_[i][d] = n;
-            }
-        }
-    }
-    const label nBox = lattice_.nBox();
-    for (direction a = 0; a < 3; ++a)
-    {
-        frictionMomentum_[a].setSize(nBox, Zero);
-        frictionForce_[a].setSize(nBox, Zero);
-    }
-    contactState_.setSize(nBox, -vector::one);
 }
 
 
@@ -579,46 +522,23 @@ Foam::soilWalls::soilWalls
     (
         returnReduce(lattice.mesh().nCells(), sumOp<label>())
       < lattice.globalN().x()*lattice.globalN().y()*lattice.globalN().z()
-    ),
-    hasFriction_(false)
+    )
 {
     readWalls(walls);
     buildGhosts();
     buildContacts();
-    buildFrictionGhosts();
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::soilWalls::foldVectors
-(
-    List<vector>& values,
-    const nodeBox& box,
-    List<vector>* kept
-) const
+void Foam::soilWalls::fold(List<vector>& values, const nodeBox& box) const
 {
     // The grid beyond a wall is the mirror image of the grid inside: what
     // the points gave to a node beyond the wall belongs, mirrored, to its
     // image inside (as if the points had mirror images beyond the wall).
     // Without this the nodes beyond a slip wall would carry part of the
     // weight of the points next to it: a spurious friction.
-    const bool keep = kept && hasFriction_;
-    if (keep)
-    {
-        // (at every friction ghost's image, not only the box's: the
-        // halo's addToOwners adds to them)
-        forAll(ghostFrictionNodes_, i)
-        {
-            for (direction a = 0; a < 3; ++a)
-            {
-                if (ghostFrictionNodes_[i][a] >= 0)
-                {
-                    kept[a][ghostSource_[i]] = Zero;
-                }
-            }
-        }
-    }
     for (const label i : ghostsIn(box))
     {
         const label w = ghostNode_[i];
@@ -626,27 +546,9 @@ void Foam::soilWalls::foldVectors
         if (src != w)
         {
             values[src] += cmptMultiply(ghostSign_[i], values[w]);
-            if (keep)
-            {
-                for (direction a = 0; a < 3; ++a)
-                {
-                    if (ghostFrictionNodes_[i][a] >= 0)
-                    {
-                        kept[a][src] +=
-                            cmptMultiply(ghostSign_[i], values[w]);
-                    }
-                }
-            }
         }
         values[w] = Zero;
     }
-}
-
-
-void Foam::soilWalls::fold(List<vector>& values, const nodeBox& box) const
-{
-    // (the forces: what friction ghosts gave kept for the contact)
-    foldVectors(values, box, frictionForce_);
 }
 
 
@@ -673,8 +575,8 @@ void Foam::soilWalls::fold
 ) const
 {
     // (an image is never itself beyond a wall: the two folds are
-    // independent; the momentum's friction ghosts kept for the contact)
-    foldVectors(values, box, frictionMomentum_);
+    // independent)
+    fold(values, box);
     fold(mass, box);
 }
 
@@ -683,103 +585,7 @@ void Foam::soilWalls::mirror(List<vector>& vel, const nodeBox& box) const
 {
     for (const label i : ghostsIn(box))
     {
-        vector v(cmptMultiply(ghostSign_[i], vel[ghostSource_[i]]));
-        if (hasFriction_)
-        {
-            // Closed friction contacts: the face holds along its normal
-            for (direction a = 0; a < 3; ++a)
-            {
-                const label n = ghostFrictionNodes_[i][a];
-                if (n >= 0 && contactState_[n][a] >= 0)
-                {
-                    v[a] = -v[a];
-                }
-            }
-        }
-        vel[ghostNode_[i]] = v;
-    }
-}
-
-
-void Foam::soilWalls::closeContacts
-(
-    List<vector>& momentum,
-    List<vector>* force,
-    const scalarList& mass,
-    const nodeBox& box,
-    const scalar dt,
-    const bool decide,
-    List<vector>* velOld
-) const
-{
-    if (!hasFriction_)
-    {
-        return;
-    }
-    // Coulomb contact at the face of a friction wall (Bardenhagen,
-    // Brackbill & Sulsky 2000, CMAME 187, 529). The folds gave the node
-    // what its ghosts received, unmirrored (the soil as if the wall were
-    // not there); the slip mirror would have reversed the normal part, a
-    // velocity change of -2 G.n, G what the ghosts gave per the node's
-    // mass over the step. A wall only pushes: closed where that change
-    // points off the wall, and then the node's momentum and force are the
-    // slip mirror's (everything after, the damping too, sees the wall).
-    const labelVector& boxN = lattice_.boxN();
-    for (const label i : contactsIn(box))
-    {
-        const label n = contactNode_[i];
-        const vector& nw = contactNormal_[i];
-        const direction a = (nw.x() != 0 ? 0 : (nw.y() != 0 ? 1 : 2));
-        scalar& state = contactState_[n][a];
-        if (decide)
-        {
-            state = -1;
-            contactImpulse_[i] = 0;
-            if (mass[n] <= VSMALL)
-            {
-                continue;
-            }
-            const scalar gn =
-                (frictionMomentum_[a][n] + dt*frictionForce_[a][n]) & nw;
-            if (gn <= 0)
-            {
-                // (the mirror would pull the soil to the wall: open, the
-                // soil off the wall or leaving it)
-                continue;
-            }
-            state = 0;
-            contactImpulse_[i] = 2*gn/mass[n];
-        }
-        if (state < 0)
-        {
-            continue;
-        }
-
-        // The node before the face and, with cubic B-splines, the one
-        // further in that the second layer of ghosts folds into
-        labelVector m(lattice_.boxIjk(n));
-        for (label layer = 0; layer < min(reach_, label(2)); ++layer)
-        {
-            if (layer > 0)
-            {
-                m[a] -= label(nw[a]);
-                if (m[a] < 0 || m[a] >= boxN[a])
-                {
-                    break;
-                }
-            }
-            const label k = lattice_.node(m.x(), m.y(), m.z());
-            const scalar pn = frictionMomentum_[a][k] & nw;
-            momentum[k] -= 2*pn*nw;
-            if (force)
-            {
-                (*force)[k] -= 2*(frictionForce_[a][k] & nw)*nw;
-            }
-            if (velOld && mass[k] > VSMALL)
-            {
-                (*velOld)[k] -= (2*pn/mass[k])*nw;
-            }
-        }
+        vel[ghostNode_[i]] = cmptMultiply(ghostSign_[i], vel[ghostSource_[i]]);
     }
 }
 
@@ -791,33 +597,27 @@ void Foam::soilWalls::applyContact
     const nodeBox& box
 ) const
 {
-    if (!hasFriction_)
-    {
-        return;
-    }
-    // Coulomb friction at the closed contacts: the tangential velocity
-    // (the wall at rest) reduced by at most the coefficient times the
-    // normal change the wall made, to rest at most (the soil slides over
-    // the wall as a body: its ghosts copy the tangential velocity, no shear
-    // across the last half cell)
+    // Coulomb friction at the last node before a friction wall
+    // (Bardenhagen, Brackbill & Sulsky 2000, CMAME 187, 529)
     for (const label i : contactsIn(box))
     {
         const label n = contactNode_[i];
-        const vector& nw = contactNormal_[i];
-        const direction a = (nw.x() != 0 ? 0 : (nw.y() != 0 ? 1 : 2));
-        if (contactState_[n][a] < 0 || mass[n] <= VSMALL)
+        if (mass[n] <= VSMALL)
         {
             continue;
         }
+        const vector& nw = contactNormal_[i];
         vector& v = vel[n];
         const scalar vn = v & nw;
-        const vector vt(v - vn*nw);
+        if (vn <= 0)
+        {
+            continue;
+        }
+        vector vt = v - vn*nw;
         const scalar magVt = mag(vt);
         const scalar reduce =
-            magVt > VSMALL
-          ? max(0.0, 1.0 - contactFriction_[i]*contactImpulse_[i]/magVt)
-          : 0;
-        v = vn*nw + reduce*vt;
+            magVt > VSMALL ? max(0.0, 1.0 - contactFriction_[i]*vn/magVt) : 0;
+        v = reduce*vt;
     }
 }
 
