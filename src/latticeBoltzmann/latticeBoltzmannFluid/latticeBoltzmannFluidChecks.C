@@ -195,6 +195,19 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
                 << " tau = 1/2 a flow through the patch grows from it;"
                 << " TRT and MRT hold." << nl;
         }
+        if (freeSurface_ && besidePressurePatch(n))
+        {
+            // (a probe: both floor patches of a reservoir and a tailwater
+            // at the reservoir's pressure drove the tailwater's node to
+            // 7.5 m/s, and the advice above did not name the cause)
+            FatalError
+                << "    The node is beside a pressure patch under a free"
+                << " surface: the patch's p in 0/p must be the hydrostatic"
+                << " pressure of the water above it (rho g (level - y) plus"
+                << " the gasPressure); a difference dp drives water through"
+                << " the patch at up to sqrt(2 dp/rho), and a water only a"
+                << " cell or two deep over the patch cannot carry it." << nl;
+        }
         FatalError << exit(FatalError);
     }
 
