@@ -408,12 +408,13 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         balanceFile_ = newStepFile
         (
             scene.mesh(), "erosion", "erosion",
-            "Fines [kg]: eroded from the points since the start, filtered"
-            " (caught back in the points' pores since the start, with a"
-            " filtrationLaw), suspended in the water, out through the"
-            " patches since the start (net), deposited at walls by settling"
-            " (with a settlingModel), and the balance's defect over the"
-            " largest of these",
+            "Fines [kg]: eroded from the points since this run's start"
+            " (a restart starts them at zero, in the folder of its start"
+            " time), filtered (caught back in the points' pores since then,"
+            " with a filtrationLaw), suspended in the water (all of it),"
+            " out through the patches since then (net), deposited at walls"
+            " by settling since then (with a settlingModel), and the"
+            " balance's defect over the largest of these",
             columns
         );
     }

@@ -74,13 +74,28 @@ Foam::erosionLaws::Shields::Shields(const dictionary& dict)
 void Foam::erosionLaws::Shields::report(Ostream& os) const
 {
     os  << "Erosion law Shields: m_dot = kEr (tau - tauC), kEr " << kEr_
-        << " s/m, d " << d_ << " m, critical Shields number " << thetaC_
-        << (given_ ? " (given)" : " (Soulsby & Whitehouse 1997, D* ")
-        << (given_ ? "" : Foam::name
-            (
-                Dstar(d_, rhoSolid_/rhoFluid_, nuFluid_, g_)
-            ) + ")")
-        << ": tauC = thetaC (rho_s - rho_w) g d = " << tauC_ << " Pa" << nl;
+        << " s/m, d " << d_ << " m, critical Shields number " << thetaC_;
+    if (given_)
+    {
+        os  << " (given)";
+    }
+    else
+    {
+        os  << " (Soulsby & Whitehouse 1997, D* "
+            << Dstar(d_, rhoSolid_/rhoFluid_, nuFluid_, g_) << " with nu "
+            << nuFluid_ << " m2/s)";
+    }
+    os  << ": tauC = thetaC (rho_s - rho_w) g d = " << tauC_ << " Pa" << nl;
+    if (!given_ && nuFluid_ > 1e-5)
+    {
+        // (a probe: a tutorial's viscous stand-in for water, nu 5e-3, put
+        // 1 mm sand at D* 0.09 and tauC 8.8 times the real grains')
+        os  << "    Note: D* takes the water's viscosity from"
+            << " constant/fluidProperties, " << nuFluid_ << " m2/s here"
+            << " against water's 1e-6: where the lattice's viscosity is"
+            << " raised for stability, give thetaC of the real grains in"
+            << " ShieldsCoeffs" << nl;
+    }
 }
 
 
