@@ -202,11 +202,11 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
             // 7.5 m/s, and the advice above did not name the cause)
             FatalError
                 << "    The node is beside a pressure patch under a free"
-                << " surface: the patch's p in 0/p must be the hydrostatic"
+                << " surface: if the patch's p in 0/p is not the hydrostatic"
                 << " pressure of the water above it (rho g (level - y) plus"
-                << " the gasPressure); a difference dp drives water through"
-                << " the patch at up to sqrt(2 dp/rho), and a water only a"
-                << " cell or two deep over the patch cannot carry it." << nl;
+                << " the gasPressure), the difference dp drives water through"
+                << " the patch at up to sqrt(2 dp/rho); a water only a cell"
+                << " or two deep over the patch is not stable either." << nl;
         }
         FatalError << exit(FatalError);
     }

@@ -90,11 +90,13 @@ void Foam::erosionLaws::Shields::report(Ostream& os) const
     {
         // (a probe: a tutorial's viscous stand-in for water, nu 5e-3, put
         // 1 mm sand at D* 0.09 and tauC 8.8 times the real grains')
-        os  << "    Note: D* takes the water's viscosity from"
-            << " constant/fluidProperties, " << nuFluid_ << " m2/s here"
+        os  << "    Note: D* takes the water's viscosity muFluid/rho of"
+            << " constant/dragProperties (default: the lattice's nu of"
+            << " constant/fluidProperties), " << nuFluid_ << " m2/s here"
             << " against water's 1e-6: where the lattice's viscosity is"
-            << " raised for stability, give thetaC of the real grains in"
-            << " ShieldsCoeffs" << nl;
+            << " raised for stability, set muFluid 1e-3 in"
+            << " constant/dragProperties (the drag's permeability needs it"
+            << " too) or give thetaC in ShieldsCoeffs" << nl;
     }
 }
 
