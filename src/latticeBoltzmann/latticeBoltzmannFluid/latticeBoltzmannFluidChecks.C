@@ -187,7 +187,8 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
             << "    - or use collisionModel " << others.c_str()
             << (smagorinsky_ > 0 ? "." : ", or smagorinskyConstant 0.1.")
             << nl;
-        if (!collision_->splitRelaxation() && besidePressurePatch(n))
+        const bool besidePatch = besidePressurePatch(n);
+        if (!collision_->splitRelaxation() && besidePatch)
         {
             FatalError
                 << "    The node is beside a pressure patch, whose links take"
@@ -195,7 +196,7 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
                 << " tau = 1/2 a flow through the patch grows from it;"
                 << " TRT and MRT hold." << nl;
         }
-        if (freeSurface_ && besidePressurePatch(n))
+        if (freeSurface_ && besidePatch)
         {
             // (a probe: both floor patches of a reservoir and a tailwater
             // at the reservoir's pressure drove the tailwater's node to
