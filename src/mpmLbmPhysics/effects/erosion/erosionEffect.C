@@ -245,26 +245,18 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     eroded_.setSize(suspensions_.size(), Zero);
     filtered_.setSize(suspensions_.size(), Zero);
 
+    densest_ = 0;
+    largest_ = 0;
+    const bool restarted = readState();
     if (law_->surface())
     {
         // The densest soil's solid fraction and the largest point at the
         // run's start; a restart takes them from the written time (the
         // points' porosity follows their deformation since)
-        const fileName statePath
-        (
-            scene.mesh().time().timePath()/"uniform"/"erosionState"
-        );
-        scalar densest = 0;
-        scalar largest = 0;
-        if (isFile(statePath))
+        if (!restarted || !(densest_ > 0))
         {
-            IFstream is(statePath);
-            const dictionary state(is);
-            densest = state.get<scalar>("densestSolidFraction");
-            largest = state.get<scalar>("largestPointVolume");
-        }
-        else
-        {
+            scalar densest = 0;
+            scalar largest = 0;
             const materialPoints& pts = soil_.mpm().points();
             forAll(pts.porosity, p)
             {
@@ -273,9 +265,11 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
             }
             reduce(densest, maxOp<scalar>());
             reduce(largest, maxOp<scalar>());
+            densest_ = densest;
+            largest_ = largest;
         }
-        densest_ = densest;
-        largest_ = largest;
+        const scalar densest = densest_;
+        const scalar largest = largest_;
         surfaceSolidFraction_ =
             dict_.getOrDefault<scalar>("surfaceSolidFraction", 0.5*densest);
         if (!(surfaceSolidFraction_ > 0) || !(surfaceSolidFraction_ < 1))
@@ -408,12 +402,13 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         balanceFile_ = newStepFile
         (
             scene.mesh(), "erosion", "erosion",
-            "Fines [kg]: eroded from the points since this run's start"
-            " (a restart starts them at zero, in the folder of its start"
-            " time), filtered (caught back in the points' pores since then,"
-            " with a filtrationLaw), suspended in the water (all of it),"
-            " out through the patches since then (net), deposited at walls"
-            " by settling since then (with a settlingModel), and the"
+            "Fines [kg]: eroded from the points since erosion started in"
+            " this case (a restart carries the totals on from the written"
+            " time's uniform/erosionState and uniform/<field>Balance), filtered"
+            " (caught back in the points' pores since then, with a"
+            " filtrationLaw), suspended in the water (all of it), out"
+            " through the patches since then (net), deposited at walls by"
+            " settling since then (with a settlingModel), and the"
             " balance's defect over the largest of these",
             columns
         );
@@ -660,6 +655,122 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
 }
 
 
+bool Foam::physicsEffects::erosion::readState()
+{
+    // Each processor's file holds the global totals; a processor without
+    // uniform/ (v1912's decomposePar may not copy it) takes them from the
+    // lowest one that has it. A time without the file (erosion added at
+    // this restart) starts the totals at zero
+    const Time& runTime = scene_.mesh().time();
+    const fileName file(runTime.timePath()/"uniform"/"erosionState");
+    label owner = isFile(file) ? Pstream::myProcNo() : labelMax;
+    reduce(owner, minOp<label>());
+    if (owner == labelMax)
+    {
+        // (the suspensions' balances count from here with the totals)
+        for (latticeAdvectionDiffusion& susp : suspensions_)
+        {
+            susp.ignoreWrittenBalance();
+        }
+        return false;
+    }
+
+    // The totals and the suspensions' balances (content at the start, out
+    // since) go together: where either was not written, both count from
+    // this time
+    bool suspensionsRestart = true;
+    for (const latticeAdvectionDiffusion& susp : suspensions_)
+    {
+        suspensionsRestart = suspensionsRestart && susp.restartsBalance();
+    }
+    bool totalsWritten = false;
+
+    const label nS = suspensions_.size();
+    scalarList eroded(nS, Zero), filtered(nS, Zero);
+    scalar densest = 0, largest = 0;
+    if (Pstream::myProcNo() == owner)
+    {
+        IFstream is(file);
+        const dictionary state(is);
+        // (a time written before the totals were kept: they start here)
+        totalsWritten = state.found("eroded");
+        if (totalsWritten && suspensionsRestart)
+        {
+            eroded = state.get<scalarList>("eroded");
+            filtered = state.get<scalarList>("filtered");
+            for (const scalarList* l : {&eroded, &filtered})
+            {
+                bool finite = true;
+                for (const scalar v : *l)
+                {
+                    finite = finite && std::isfinite(v);
+                }
+                if (l->size() != nS || !finite)
+                {
+                    FatalIOErrorInFunction(state)
+                        << (l == &eroded ? "eroded " : "filtered ") << *l
+                        << " is not allowed: " << nS << " finite totals"
+                        << " (one per suspension of this run) are. Restart"
+                        << " with the erosionProperties of the run that"
+                        << " wrote it, or remove the entries eroded and"
+                        << " filtered from " << file << " to count the"
+                        << " totals (and the suspensions' balances) from"
+                        << " this time" << exit(FatalIOError);
+                }
+            }
+        }
+        if (law_->surface() && state.found("densestSolidFraction"))
+        {
+            densest = state.get<scalar>("densestSolidFraction");
+            largest = state.get<scalar>("largestPointVolume");
+            if (!(densest > 0 && densest <= 1) || !(largest > 0))
+            {
+                FatalIOErrorInFunction(state)
+                    << "densestSolidFraction " << densest << " and"
+                    << " largestPointVolume " << largest << ": a fraction"
+                    << " in (0, 1] and a positive volume [m3] are allowed."
+                    << " Remove " << file << " to take them from the"
+                    << " points of this time" << exit(FatalIOError);
+            }
+        }
+    }
+    // (exact: every processor but the owner adds zeros)
+    Pstream::listCombineGather(eroded, plusEqOp<scalar>());
+    Pstream::listCombineScatter(eroded);
+    Pstream::listCombineGather(filtered, plusEqOp<scalar>());
+    Pstream::listCombineScatter(filtered);
+    reduce(densest, sumOp<scalar>());
+    reduce(largest, sumOp<scalar>());
+    reduce(totalsWritten, orOp<bool>());
+    if (!(totalsWritten && suspensionsRestart))
+    {
+        for (latticeAdvectionDiffusion& susp : suspensions_)
+        {
+            susp.ignoreWrittenBalance();
+        }
+        Info<< "    Erosion's totals count from time " << runTime.timeName()
+            << " (" << (totalsWritten ? "the suspension's populations or"
+               " uniform/<field>Balance" : "the totals in " + file.name())
+            << " not written there)" << endl;
+    }
+
+    // The running totals are per processor, summed when asked for: the
+    // master carries what came before
+    eroded_ = Pstream::master() ? eroded : scalarList(nS, Zero);
+    filtered_ = Pstream::master() ? filtered : scalarList(nS, Zero);
+    densest_ = densest;
+    largest_ = largest;
+    if (totalsWritten && suspensionsRestart)
+    {
+        Info<< "    Erosion's totals continue from " << file.name()
+            << " of time " << runTime.timeName() << ": eroded "
+            << sum(eroded) << " kg, filtered " << sum(filtered) << " kg"
+            << endl;
+    }
+    return true;
+}
+
+
 Foam::scalar Foam::physicsEffects::erosion::eroded() const
 {
     return returnReduce(sum(eroded_), sumOp<scalar>());
@@ -781,14 +892,31 @@ void Foam::physicsEffects::erosion::write()
     if (law_->surface())
     {
         writeWallShearStress();
+    }
 
-        // What a restart from this time must start from, to the last bit
+    // What a restart from this time must start from, to the last bit: the
+    // totals (global, the same in each processor's file) and the
+    // surface's reference values
+    scalarList eroded(eroded_), filtered(filtered_);
+    Pstream::listCombineGather(eroded, plusEqOp<scalar>());
+    Pstream::listCombineScatter(eroded);
+    Pstream::listCombineGather(filtered, plusEqOp<scalar>());
+    Pstream::listCombineScatter(filtered);
+    {
         const fileName dir(scene_.mesh().time().timePath()/"uniform");
         mkDir(dir);
         OFstream os(dir/"erosionState");
         os.precision(17);
-        os  << "densestSolidFraction " << densest_ << ";" << nl
-            << "largestPointVolume " << largest_ << ";" << nl;
+        os  << "// Fines [kg] eroded and filtered since erosion started, per"
+            << " suspension" << nl
+            << "eroded " << eroded << ";" << nl
+            << "filtered " << filtered << ";" << nl;
+        if (law_->surface())
+        {
+            os  << "densestSolidFraction " << densest_ << ";" << nl
+                << "largestPointVolume " << largest_ << ";" << nl;
+        }
+        os.flush();
         if (!os.good())
         {
             FatalErrorInFunction
@@ -813,7 +941,7 @@ void Foam::physicsEffects::erosion::updateFields()
 
 Foam::wordList Foam::physicsEffects::erosion::stateFiles() const
 {
-    wordList files;
+    wordList files(1, "uniform/erosionState");
     for (const latticeAdvectionDiffusion& susp : suspensions_)
     {
         files.append(susp.populationFiles());
@@ -858,7 +986,7 @@ Foam::string Foam::physicsEffects::erosion::progress() const
     const label nRemoved = returnReduce(removed_, sumOp<label>());
     if (nRemoved)
     {
-        s += ", " + Foam::name(nRemoved) + " points removed";
+        s += ", " + Foam::name(nRemoved) + " points removed this run";
     }
     return s;
 }

@@ -84,9 +84,11 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
     if (dict_.getOrDefault<bool>("writeBalance", false))
     {
         wordList columns({"content", "sourced"});
-        for (const polyPatch& pp : scene.mesh().boundaryMesh())
+        // (the processor patches aside: nothing crosses them)
+        const polyBoundaryMesh& patches = scene.mesh().boundaryMesh();
+        for (label patchi = 0; patchi < patches.nNonProcessor(); ++patchi)
         {
-            columns.append("out_" + pp.name());
+            columns.append("out_" + patches[patchi].name());
         }
         if (settling_.valid())
         {
@@ -97,9 +99,12 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
         (
             scene.mesh(), "scalarTransport", "balance",
             "Balance of " + transport_.field().name()
-          + " [its units x m3]: content, added by sources, out through"
-            " each patch (negative: in), deposited at walls by settling"
-            " (with a settlingModel), relative defect",
+          + " [its units x m3]: content, added by sources since the"
+            " case's start, out through each patch since then (negative:"
+            " in), deposited at walls by settling since then (with a"
+            " settlingModel), relative defect (a restart carries the"
+            " totals on from the written time's uniform/"
+          + transport_.field().name() + "Balance)",
             columns
         );
     }
