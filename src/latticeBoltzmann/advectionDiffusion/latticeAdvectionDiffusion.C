@@ -657,6 +657,30 @@ void Foam::latticeAdvectionDiffusion::instability
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::word Foam::latticeAdvectionDiffusion::fieldFile
+(
+    const latticeMesh& lattice,
+    const word& fieldName,
+    const dictionary& dict
+)
+{
+    // (OpenFOAM's own message names the missing file, not the entry that
+    // asked for it)
+    const fvMesh& mesh = lattice.mesh();
+    IOobject io(fieldName, mesh.time().timeName(), mesh, IOobject::MUST_READ);
+    if (!returnReduce(io.typeHeaderOk<volScalarField>(false), andOp<bool>()))
+    {
+        FatalIOErrorInFunction(dict)
+            << "field " << fieldName << ": there is no volScalarField "
+            << fieldName << " in " << io.path() << " to start from. Give"
+            << " the name of the transported field, its file in the start"
+            << " time with its patches (fixedValue, zeroGradient,"
+            << " inletOutlet)" << exit(FatalIOError);
+    }
+    return fieldName;
+}
+
+
 Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
 (
     const latticeMesh& lattice,
@@ -675,7 +699,7 @@ Foam::latticeAdvectionDiffusion::latticeAdvectionDiffusion
     (
         IOobject
         (
-            fieldName,
+            fieldFile(lattice, fieldName, dict),
             lattice.mesh().time().timeName(),
             lattice.mesh(),
             IOobject::MUST_READ,

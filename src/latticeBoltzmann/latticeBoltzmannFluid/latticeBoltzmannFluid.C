@@ -213,22 +213,36 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     // Mach limit
     {
         const scalar pMax = units_.rho0()*sqr(units_.soundSpeed());
-        forAll(p_, celli)
+        // (the patches' values too: a pressure patch imposes its value on
+        // the lattice, and -1e300 there trapped in the first step)
+        auto checkP = [&](const scalarField& p, const word& entry)
         {
-            if (!(mag(p_[celli]) < pMax))
+            forAll(p, i)
             {
-                FatalErrorInFunction
-                    << "file: " << p_.objectPath() << ", internalField: p "
-                    << p_[celli] << " Pa at cell " << celli << " is not"
-                    << " allowed: the lattice holds |p| < rho c_s^2 = "
-                    << pMax << " Pa at this deltaT and cell size (its"
-                    << " density 1 + p/(rho c_s^2) must lie in (0, 2); c_s ="
-                    << " dx/(sqrt(3) deltaT) = " << units_.soundSpeed()
-                    << " m/s)." << nl
-                    << "    Check p's units (Pa, relative to the reference;"
-                    << " not p/rho), or use a smaller deltaT in"
-                    << " system/controlDict" << exit(FatalError);
+                if (!(mag(p[i]) < pMax))
+                {
+                    FatalErrorInFunction
+                        << "file: " << p_.objectPath() << ", " << entry
+                        << ": p " << p[i] << " Pa at index " << i << " is"
+                        << " not allowed: the lattice holds |p| < rho c_s^2"
+                        << " = " << pMax << " Pa at this deltaT and cell"
+                        << " size (its density 1 + p/(rho c_s^2) must lie in"
+                        << " (0, 2); c_s = dx/(sqrt(3) deltaT) = "
+                        << units_.soundSpeed() << " m/s)." << nl
+                        << "    Check p's units (Pa, relative to the"
+                        << " reference; not p/rho), or use a smaller deltaT"
+                        << " in system/controlDict" << exit(FatalError);
+                }
             }
+        };
+        checkP(p_.primitiveField(), "internalField");
+        forAll(p_.boundaryField(), patchi)
+        {
+            checkP
+            (
+                p_.boundaryField()[patchi],
+                "boundaryField." + p_.boundaryField()[patchi].patch().name()
+            );
         }
         const scalar uMax = machLimit_*units_.soundSpeed();
         auto checkU = [&](const vectorField& U, const word& entry)

@@ -227,7 +227,9 @@ Foam::scalar Foam::latticeBoltzmannFluid::massDefect() const
         freeSurface_ ? 0 : displacedMass_
     );
     reduce(m, sumOp<Vector2D<scalar>>());
-    return m.x()/(mass0_ + m.y()) - 1.0;
+    // (no water at the start, e.g. a free surface that has none yet: 0)
+    const scalar m0 = mass0_ + m.y();
+    return m0 > 0 ? m.x()/m0 - 1.0 : 0;
 }
 
 

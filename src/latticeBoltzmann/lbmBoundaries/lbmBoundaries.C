@@ -134,6 +134,23 @@ void Foam::lbmBoundaries::classifyPatches
                         << " lInf 1; (lInf > 0; a few channel widths)"
                         << exit(FatalIOError);
                 }
+                // (the lattice's density there must stay in (0, 2), as
+                // for p itself: 1e300 blew up in the first step)
+                const scalar pMax = units.rho0()*sqr(units.soundSpeed());
+                if (!(mag(adv.fieldInf()) < pMax))
+                {
+                    autoPtr<dictionary> d = fieldDict(mesh, p);
+                    FatalIOErrorInFunction
+                    (
+                        d->subDict("boundaryField").subDict(pp.name())
+                    )
+                        << "Patch " << pp.name() << ": fieldInf "
+                        << adv.fieldInf() << " Pa is not allowed: the"
+                        << " pressure beyond the outlet must be one the"
+                        << " lattice holds, |p| < rho c_s^2 = " << pMax
+                        << " Pa at this deltaT and cell size"
+                        << exit(FatalIOError);
+                }
                 absorbing_[patchi] = true;
                 absorbRhoInf_[patchi] = units.rhoLattice(adv.fieldInf());
                 absorbRelax_[patchi] =

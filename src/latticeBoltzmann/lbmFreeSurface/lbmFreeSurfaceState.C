@@ -30,7 +30,12 @@ void Foam::lbmFreeSurface::setFromFraction
     const labelList& cellNode = lattice_.cellNode();
     const scalarList& w = vs_.w();
 
-    // (alpha is checked by the caller: finite, in [0, 1])
+    // (alpha is checked by the caller: finite, in [0, 1]). Within
+    // roundOff of 0 or 1 a cell is gas or liquid: cut-cell fractions
+    // (setAlphaField) leave 1e-17..1e-13 around the surface, which made
+    // interface nodes of no water that emptied at the first step, and a
+    // changed bit in a binary alpha.water's zero changed the run
+    const scalar roundOff = 1e-12;
     forAll(cellNode, celli)
     {
         const label n = cellNode[celli];
@@ -40,13 +45,13 @@ void Foam::lbmFreeSurface::setFromFraction
         }
         const scalar rho = density(f, n);
         const scalar a = alpha[celli];
-        if (a >= 1)
+        if (a >= 1 - roundOff)
         {
             type_[n] = LIQUID;
             mass_[n] = capacity(rho, n);
             fill_[n] = 1;
         }
-        else if (a <= 0)
+        else if (a <= roundOff)
         {
             type_[n] = GAS;
             mass_[n] = 0;

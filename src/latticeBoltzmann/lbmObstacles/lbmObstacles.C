@@ -163,6 +163,16 @@ Foam::lbmObstacles::lbmObstacles
                 << exit(FatalIOError);
         }
     }
+    // (a body over the whole mesh leaves no water to simulate)
+    if (sum(total) >= returnReduce(lattice_.cellNode().size(), sumOp<label>()))
+    {
+        FatalIOErrorInFunction(bodies)
+            << "The obstacles " << names_ << " cover every lattice node of"
+            << " the mesh: no water is left. Each body must leave water"
+            << " around it (check their sizes, e.g. a radius, against the"
+            << " mesh's bounds " << lattice_.mesh().bounds() << ")"
+            << exit(FatalIOError);
+    }
 
     // The kernel's runs without the solid nodes
     DynamicList<latticeMesh::nodeRun> runs;

@@ -437,6 +437,30 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
     const bool here =
         posIO.typeHeaderOk<IOField<vector>>(false)
      || coordIO.typeHeaderOk<IOField<vector>>(false);
+    // A cloud whose positions are gone is damaged, not absent: read as
+    // none, its soil vanished without a word (OpenFOAM's cloud reads
+    // coordinates; without them it read no point, older positions beside
+    // or not)
+    IOobject massIO(posIO);
+    massIO.rename("mass");
+    const bool massHere =
+        returnReduce(massIO.typeHeaderOk<IOField<scalar>>(false), orOp<bool>());
+    const bool coordinatesHere =
+        returnReduce(coordIO.typeHeaderOk<IOField<vector>>(false), orOp<bool>());
+    auto positionsMissing = [&]()
+    {
+        FatalErrorInFunction
+            << "file: " << coordIO.objectPath() << " is missing: the"
+            << " cloud " << cloudName << " of time " << timeName
+            << " has its fields (" << massIO.objectPath() << ", ...) but not"
+            << " the points' positions." << nl
+            << "    Restore it, restart from another time, or run"
+            << " setMaterialPoints again" << exit(FatalError);
+    };
+    if (massHere && !coordinatesHere)
+    {
+        positionsMissing();
+    }
     if (!returnReduce(here, orOp<bool>()))
     {
         return false;

@@ -143,11 +143,14 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
     {
         auto positive = [&dict](const word& key)
         {
+            // (bounded so that rhoInf magUInf^2 Aref/2 x lRef, the
+            // coefficients' divisor, can neither overflow nor vanish)
             const scalar v = dict.get<scalar>(key);
-            if (!(v > 0) || !std::isfinite(v))
+            if (!(v >= 1e-30 && v <= 1e30))
             {
                 FatalIOErrorInFunction(dict)
-                    << key << " " << v << ": must be a positive number"
+                    << key << " " << v << " is not allowed: a positive"
+                    << " number in [1e-30, 1e30] (SI units) is"
                     << exit(FatalIOError);
             }
             return v;
@@ -159,14 +162,19 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
 
         auto direction = [&dict](const word& key, const vector& deflt)
         {
+            // (scaled by its largest component before its magnitude is
+            // taken: the square of 1e300 overflows)
             const vector d = dict.getOrDefault<vector>(key, deflt);
-            if (!(mag(d) > 0) || !std::isfinite(mag(d)))
+            const scalar largest = cmptMax(cmptMag(d));
+            if (!(largest > 0) || !std::isfinite(largest))
             {
                 FatalIOErrorInFunction(dict)
-                    << key << " " << d << ": must be a non-zero vector"
+                    << key << " " << d << " is not allowed: a non-zero"
+                    << " vector of finite components is"
                     << exit(FatalIOError);
             }
-            return d/mag(d);
+            const vector unit = d/largest;
+            return unit/mag(unit);
         };
         dragDir_ = direction("dragDir", vector(1, 0, 0));
         liftDir_ = direction("liftDir", vector(0, 1, 0));
@@ -196,7 +204,9 @@ bool Foam::functionObjects::latticeForces::execute()
             dict_,
             "obstacles",
             obstacleNames_,
-            lbm.obstacles().names()
+            lbm.obstacles().names(),
+            "the obstacles of "
+          + string(mesh_.time().constant()/"fluidProperties")
         );
     }
     lbm.wallForce

@@ -51,7 +51,8 @@ Foam::boolList Foam::selectNames
     const dictionary& dict,
     const word& keyword,
     const wordRes& selection,
-    const wordList& names
+    const wordList& names,
+    const string& namesFrom
 )
 {
     boolList selected(names.size(), false);
@@ -69,7 +70,9 @@ Foam::boolList Foam::selectNames
         if (!found)
         {
             FatalIOErrorInFunction(dict)
-                << keyword << ": " << pattern << " matches none of " << names
+                << keyword << ": " << pattern << " matches none of "
+                << (namesFrom.empty() ? "" : namesFrom.c_str())
+                << (namesFrom.empty() ? "" : " ") << names
                 << exit(FatalIOError);
         }
     }

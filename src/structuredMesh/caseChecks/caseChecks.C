@@ -21,6 +21,76 @@ License
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
+void Foam::checkFunctionIntervals(const dictionary& controlDict)
+{
+    // OpenFOAM's timeControl divides the run's time by a function object's
+    // runTime (adjustableRunTime, clockTime, cpuTime) interval and takes a
+    // label of the quotient: an interval of 0, 1e-300 or NaN trapped there,
+    // inside Time::run, with only a stack trace
+    if (!controlDict.isDict("functions"))
+    {
+        return;
+    }
+    const scalar deltaT = controlDict.getOrDefault<scalar>("deltaT", 0);
+    const scalar span =
+        max
+        (
+            controlDict.getOrDefault<scalar>("endTime", 0)
+          - min(controlDict.getOrDefault<scalar>("startTime", 0), 0),
+            scalar(0)
+        )
+      + deltaT;
+    for (const entry& e : controlDict.subDict("functions"))
+    {
+        if (!e.isDict())
+        {
+            continue;
+        }
+        const dictionary& fo = e.dict();
+        for (const word prefix : {"write", "execute", "output"})
+        {
+            const word control(prefix + "Control");
+            const word interval(prefix + "Interval");
+            if (!fo.found(control) || !fo.found(interval))
+            {
+                continue;
+            }
+            ITstream& cts = fo.lookup(control);
+            ITstream& its = fo.lookup(interval);
+            if
+            (
+                cts.size() != 1 || !cts[0].isWord()
+             || its.size() != 1 || !its[0].isNumber()
+            )
+            {
+                continue;
+            }
+            const word how(cts[0].wordToken());
+            const scalar value = its[0].number();
+            const bool simTime = how == "runTime" || how == "adjustableRunTime";
+            const bool wallTime = how == "clockTime" || how == "cpuTime";
+            if (!simTime && !wallTime)
+            {
+                continue;
+            }
+            // As many intervals as a label can count
+            const scalar smallest = simTime ? span/1e9 : 1e-3;
+            if (!std::isfinite(value) || !(value > 0) || value < smallest)
+            {
+                entryNotAllowed
+                (
+                    fo, interval, value,
+                    "with " + control + " " + how + " it is a time ["
+                  + word(simTime ? "s of the run" : "s of wall time")
+                  + "]: a positive, finite number of at least "
+                  + Foam::name(smallest)
+                );
+            }
+        }
+    }
+}
+
+
 void Foam::checkControlDict(const argList& args)
 {
     const fileName path =
@@ -56,6 +126,7 @@ void Foam::checkControlDict(const argList& args)
     };
     positive("deltaT");
     positive("writeInterval");
+    checkFunctionIntervals(dict);
 
     if (dict.found("endTime"))
     {

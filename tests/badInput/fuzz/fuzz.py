@@ -3,7 +3,7 @@
 #   mpmLbmFoam: coupled material point / lattice Boltzmann soil-water solver
 #------------------------------------------------------------------------------
 # Script
-#     tests/badInput/fuzz/fuzz.py [--full] [--seed N] [--count N]
+#     tests/badInput/fuzz/fuzz.py [--full] [--seed N] [--count N] [--bases A,B]
 #                                 [--timeout S] [--match TEXT] [--keep]
 #                                 [--list]
 #
@@ -112,16 +112,18 @@ class Base(object):
     """A tutorial made small: EDITS are (file, keypath, value) set with the
     project's setEntry; SOIL: setMaterialPoints makes a cloud; ZERO_ORIG:
     0.orig copied to 0 (restore0Dir); EXPR: setExprFields (hydrostatic
-    water); PARALLEL: decomposed on 2 ranks, run with mpirun."""
+    water); PARALLEL: decomposed on 2 ranks, run with mpirun; UTILITIES:
+    OpenFOAM's programs run after blockMesh (setFields for alpha.water)."""
 
     def __init__(self, name, tutorial, edits, soil=False, zero_orig=False,
-                 expr=False, parallel=False):
+                 expr=False, parallel=False, utilities=()):
         self.name = name
         self.tutorial = tutorial
         self.edits = edits
         self.soil = soil
         self.zero_orig = zero_orig
         self.expr = expr
+        self.utilities = utilities
         self.parallel = parallel
         self.dir = os.path.join(RUN, 'base', name)
         self.ok = False
@@ -138,8 +140,10 @@ def _times(dt, steps):
 
 def _control(dt):
     """endTime four steps, a written time every two: the first run writes
-    the restart data (two steps), the restart runs the other two."""
-    return [('system/controlDict', 'deltaT', '%.10g' % dt),
+    the restart data (two steps), the restart (from the latest time) runs
+    the other two."""
+    return [('system/controlDict', 'startFrom', 'latestTime'),
+            ('system/controlDict', 'deltaT', '%.10g' % dt),
             ('system/controlDict', 'endTime', _times(dt, 4)),
             ('system/controlDict', 'writeInterval', _times(dt, 2))]
 
@@ -192,11 +196,31 @@ BASES = [
          _COUPLED + _TWO_WAY, soil=True, zero_orig=True, expr=True),
     Base('soilColumnCollapseParallel', 'coupled/soilColumnCollapse',
          _COUPLED, soil=True, zero_orig=True, parallel=True),
+    # The free surface (Martin & Moyce's column: alpha.water by setFields,
+    # its hydrostatic pressure by setExprFields)
+    Base('damBreak', 'fluid/damBreak',
+         [('system/blockMeshDict', 'n', '4'),
+          ('system/blockMeshDict', 'nx', '24'),
+          ('system/blockMeshDict', 'ny', '10')] + _control(6.25e-4),
+         zero_orig=True, expr=True, utilities=('setFields',)),
+    # Surface erosion (the hole erosion test's slot: wall shear stress,
+    # the suspension's lattice and its patches, the erosion's state files)
+    Base('holeErosionTest', 'coupled/holeErosionTest', _control(5e-3),
+         soil=True),
+    # A solid body in the water and the forces on it
+    Base('cylinder2D', 'fluid/cylinder2D',
+         [('system/blockMeshDict', 'n', '10'),
+          ('system/blockMeshDict', 'nx', '220'),
+          ('system/blockMeshDict', 'ny', '41'),
+          ('system/controlDict', 'functions/cylinderForces/writeInterval',
+           '1')] + _control(1.0 / 300),
+         zero_orig=True, expr=True),
 ]
 
 # Dictionaries that belong to OpenFOAM's mesh and field utilities, run once
 # when the base case is made, not by the solver
-SKIPPED_DICTS = ('system/blockMeshDict', 'system/setExprFieldsDict')
+SKIPPED_DICTS = ('system/blockMeshDict', 'system/setExprFieldsDict',
+                 'system/setFieldsDict')
 
 
 #------------------------------------------------------------------------------
@@ -436,6 +460,8 @@ def prepare(base, timeout):
     if base.zero_orig:
         shutil.copytree(os.path.join(bare, '0.orig'), os.path.join(bare, '0'))
     _step(bare, ['blockMesh'], tag='.prep')
+    for utility in base.utilities:
+        _step(bare, [utility], tag='.prep')
     if base.expr:
         _step(bare, ['setExprFields'], tag='.prep')
     initial = base.state('initial')
@@ -1130,6 +1156,8 @@ def main():
                     help='mutations of the CI sample (without --full)')
     ap.add_argument('--timeout', type=float, default=None,
                     help='seconds per program run (default 20, 60 --full)')
+    ap.add_argument('--bases', default=None,
+                    help='only these base cases (comma-separated names)')
     ap.add_argument('--match', default=None,
                     help='only mutations whose description contains TEXT')
     ap.add_argument('--keep', action='store_true',
@@ -1161,6 +1189,14 @@ def main():
 
     # The base cases, two at a time (the parallel one alone: two ranks)
     status = 0
+    if args.bases:
+        names = args.bases.split(',')
+        unknown = sorted(set(names) - set(b.name for b in BASES))
+        if unknown:
+            print('FAIL: --bases: no base case %s (there are %s)'
+                  % (', '.join(unknown), ', '.join(b.name for b in BASES)))
+            return 1
+        BASES[:] = [b for b in BASES if b.name in names]
     serial = [b for b in BASES if not b.parallel]
     errors = {}
 
