@@ -675,7 +675,14 @@ Foam::word Foam::latticeAdvectionDiffusion::fieldFile
             << fieldName << " in " << io.path() << " to start from. Give"
             << " the name of the transported field, its file in the start"
             << " time with its patches (fixedValue, zeroGradient,"
-            << " inletOutlet)" << exit(FatalIOError);
+            << " inletOutlet)"
+            << (
+                   fieldName.find('.') != string::npos
+                 ? " (with suspensionPerMaterial each material's field is"
+                   " <field>.<material>)"
+                 : ""
+               )
+            << exit(FatalIOError);
     }
     return fieldName;
 }

@@ -213,8 +213,8 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     // Mach limit
     {
         const scalar pMax = units_.rho0()*sqr(units_.soundSpeed());
-        // (the patches' values too: a pressure patch imposes its value on
-        // the lattice, and -1e300 there trapped in the first step)
+        // (the values of the patches that impose p too, fixed values and
+        // advective outlets: -1e300 there trapped in the first step)
         auto checkP = [&](const scalarField& p, const word& entry)
         {
             forAll(p, i)
@@ -238,6 +238,11 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         checkP(p_.primitiveField(), "internalField");
         forAll(p_.boundaryField(), patchi)
         {
+            const fvPatchScalarField& pp = p_.boundaryField()[patchi];
+            if (!pp.fixesValue() && pp.type() != "advective")
+            {
+                continue;
+            }
             checkP
             (
                 p_.boundaryField()[patchi],

@@ -31,11 +31,11 @@ void Foam::lbmFreeSurface::setFromFraction
     const scalarList& w = vs_.w();
 
     // (alpha is checked by the caller: finite, in [0, 1]). Within
-    // roundOff of 0 or 1 a cell is gas or liquid: cut-cell fractions
+    // alphaRoundOff of 0 or 1 a cell is gas or liquid: cut-cell fractions
     // (setAlphaField) leave 1e-17..1e-13 around the surface, which made
     // interface nodes of no water that emptied at the first step, and a
     // changed bit in a binary alpha.water's zero changed the run
-    const scalar roundOff = 1e-12;
+    const scalar roundOff = alphaRoundOff;
     forAll(cellNode, celli)
     {
         const label n = cellNode[celli];

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialPointSoil.H"
+#include "restartManifest.H"
 #include "unitConversion.H"
 #include "selectEntry.H"
 #include "volFields.H"
@@ -117,7 +118,21 @@ Foam::scalar Foam::materialPointSoil::stableDt() const
             << " p-wave speed of the materials)." << nl
             << "    Lower soilCFL in system/controlDict (now " << CFL_
             << "), or check the loads the couplings put on the soil."
-            << " Nothing of this step was written." << exit(FatalError);
+            << " Nothing of this step was written." << nl;
+        // (a cloud edited or damaged since it was written is the likelier
+        // cause: named with the files, as the start found them)
+        if (restartManifest::suspects.size())
+        {
+            FatalError
+                << "    The start read files changed since they were"
+                << " written, the likelier cause:";
+            for (const fileName& f : restartManifest::suspects)
+            {
+                FatalError<< " " << f.c_str();
+            }
+            FatalError<< nl;
+        }
+        FatalError<< exit(FatalError);
     }
     // (every processor takes the same sub-steps)
     reduce(vmax, maxOp<scalar>());

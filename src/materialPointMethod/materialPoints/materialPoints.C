@@ -438,28 +438,62 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
         posIO.typeHeaderOk<IOField<vector>>(false)
      || coordIO.typeHeaderOk<IOField<vector>>(false);
     // A cloud whose positions are gone is damaged, not absent: read as
-    // none, its soil vanished without a word (OpenFOAM's cloud reads
-    // coordinates; without them it read no point, older positions beside
-    // or not)
+    // none, its soil vanished without a word. Which file OpenFOAM's cloud
+    // reads (Cloud::readCloudUniformProperties): coordinates without a
+    // uniform/lagrangian/<cloud>/cloudProperties, else the geometry it
+    // names (positions if none: a cloud older than v1706). Per processor:
+    // one that has the fields but not that file
+    word geometry("coordinates");
+    {
+        const fileName props
+        (
+            mesh.time().path()/timeName/"uniform"/cloud::prefix/cloudName
+           /"cloudProperties"
+        );
+        if (isFile(props))
+        {
+            geometry = "positions";
+            // (a damaged file is refused naming it below)
+            catchFatal
+            (
+                [&]()
+                {
+                    IFstream is(props);
+                    const dictionary dict(is);
+                    if (dict.getOrDefault<word>("geometry", "positions") == "coordinates")
+                    {
+                        geometry = "coordinates";
+                    }
+                },
+                false
+            );
+        }
+    }
+    IOobject geometryIO(posIO);
+    geometryIO.rename(geometry);
     IOobject massIO(posIO);
     massIO.rename("mass");
-    const bool massHere =
-        returnReduce(massIO.typeHeaderOk<IOField<scalar>>(false), orOp<bool>());
-    const bool coordinatesHere =
-        returnReduce(coordIO.typeHeaderOk<IOField<vector>>(false), orOp<bool>());
-    auto positionsMissing = [&]()
+    const bool positionsGone =
+        massIO.typeHeaderOk<IOField<scalar>>(false)
+     && !geometryIO.typeHeaderOk<IOField<vector>>(false);
+    if (returnReduce(positionsGone, orOp<bool>()))
     {
+        // (every processor stops: those with their files name the
+        // damaged one's by its place in the time)
         FatalErrorInFunction
-            << "file: " << coordIO.objectPath() << " is missing: the"
-            << " cloud " << cloudName << " of time " << timeName
-            << " has its fields (" << massIO.objectPath() << ", ...) but not"
-            << " the points' positions." << nl
+            << "file: "
+            << (
+                   positionsGone
+                 ? geometryIO.objectPath()
+                 : fileName(timeName/cloud::prefix/cloudName/geometry)
+               )
+            << " is missing" << (positionsGone ? "" : " on a processor")
+            << ": the"
+            << " cloud " << cloudName << " of time " << timeName << " has"
+            << " its fields (mass, ...) but not the points' positions, which"
+            << " OpenFOAM reads from " << geometry << "." << nl
             << "    Restore it, restart from another time, or run"
             << " setMaterialPoints again" << exit(FatalError);
-    };
-    if (massHere && !coordinatesHere)
-    {
-        positionsMissing();
     }
     if (!returnReduce(here, orOp<bool>()))
     {

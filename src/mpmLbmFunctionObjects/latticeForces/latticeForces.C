@@ -150,7 +150,7 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
             {
                 FatalIOErrorInFunction(dict)
                     << key << " " << v << " is not allowed: a positive"
-                    << " number in [1e-30, 1e30] (SI units) is"
+                    << " number in [1e-30, 1e30] (SI units) is required"
                     << exit(FatalIOError);
             }
             return v;
@@ -166,11 +166,15 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
             // taken: the square of 1e300 overflows)
             const vector d = dict.getOrDefault<vector>(key, deflt);
             const scalar largest = cmptMax(cmptMag(d));
-            if (!(largest > 0) || !std::isfinite(largest))
+            if
+            (
+                !(largest > 0) || !std::isfinite(d.x())
+             || !std::isfinite(d.y()) || !std::isfinite(d.z())
+            )
             {
                 FatalIOErrorInFunction(dict)
                     << key << " " << d << " is not allowed: a non-zero"
-                    << " vector of finite components is"
+                    << " vector of finite components is required"
                     << exit(FatalIOError);
             }
             const vector unit = d/largest;

@@ -21,25 +21,22 @@ License
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
-void Foam::checkFunctionIntervals(const dictionary& controlDict)
+void Foam::checkFunctionIntervals
+(
+    const dictionary& controlDict,
+    const scalar span
+)
 {
-    // OpenFOAM's timeControl divides the run's time by a function object's
-    // runTime (adjustableRunTime, clockTime, cpuTime) interval and takes a
-    // label of the quotient: an interval of 0, 1e-300 or NaN trapped there,
-    // inside Time::run, with only a stack trace
+    // OpenFOAM's timeControl divides the time since the run's start by a
+    // function object's runTime (adjustableRunTime, clockTime, cpuTime)
+    // interval and takes a label of the quotient: an interval of 0,
+    // 1e-300 or NaN trapped there, inside Time::run, with only a stack
+    // trace. span: the run's simulated time [s] from its start, a step
+    // beyond its end
     if (!controlDict.isDict("functions"))
     {
         return;
     }
-    const scalar deltaT = controlDict.getOrDefault<scalar>("deltaT", 0);
-    const scalar span =
-        max
-        (
-            controlDict.getOrDefault<scalar>("endTime", 0)
-          - min(controlDict.getOrDefault<scalar>("startTime", 0), 0),
-            scalar(0)
-        )
-      + deltaT;
     for (const entry& e : controlDict.subDict("functions"))
     {
         if (!e.isDict())
@@ -47,8 +44,19 @@ void Foam::checkFunctionIntervals(const dictionary& controlDict)
             continue;
         }
         const dictionary& fo = e.dict();
+        // (OpenFOAM builds no disabled function object)
+        if (!fo.getOrDefault<bool>("enabled", true))
+        {
+            continue;
+        }
         for (const word prefix : {"write", "execute", "output"})
         {
+            // (with the deprecated outputControl OpenFOAM reads that and
+            // ignores writeControl)
+            if (prefix == "write" && fo.found("outputControl"))
+            {
+                continue;
+            }
             const word control(prefix + "Control");
             const word interval(prefix + "Interval");
             if (!fo.found(control) || !fo.found(interval))
@@ -67,7 +75,9 @@ void Foam::checkFunctionIntervals(const dictionary& controlDict)
             }
             const word how(cts[0].wordToken());
             const scalar value = its[0].number();
-            const bool simTime = how == "runTime" || how == "adjustableRunTime";
+            const bool simTime =
+                how == "runTime" || how == "adjustableRunTime"
+             || how == "adjustable";
             const bool wallTime = how == "clockTime" || how == "cpuTime";
             if (!simTime && !wallTime)
             {
@@ -83,7 +93,7 @@ void Foam::checkFunctionIntervals(const dictionary& controlDict)
                     "with " + control + " " + how + " it is a time ["
                   + word(simTime ? "s of the run" : "s of wall time")
                   + "]: a positive, finite number of at least "
-                  + Foam::name(smallest)
+                  + Foam::name(smallest) + " is allowed"
                 );
             }
         }
@@ -126,7 +136,6 @@ void Foam::checkControlDict(const argList& args)
     };
     positive("deltaT");
     positive("writeInterval");
-    checkFunctionIntervals(dict);
 
     if (dict.found("endTime"))
     {
@@ -134,6 +143,7 @@ void Foam::checkControlDict(const argList& args)
         const word startFrom =
             dict.getOrDefault<word>("startFrom", "latestTime");
         const scalar startTime = dict.getOrDefault<scalar>("startTime", 0);
+        scalar runStart = startTime;
         if (!std::isfinite(endTime) || endTime < 0)
         {
             entryNotAllowed
@@ -194,7 +204,22 @@ void Foam::checkControlDict(const argList& args)
                   + " (startFrom latestTime): it must not end before it"
                 );
             }
+            if (latestName.size())
+            {
+                runStart = latest;
+            }
         }
+        else if (startFrom == "firstTime")
+        {
+            const instantList times(Time::findTimes(args.path()));
+            if (times.size())
+            {
+                runStart = times.first().value();
+            }
+        }
+        // (with the end checked: an endTime of 1e300 is refused as such,
+        // not as a function object's interval too small for it)
+        checkFunctionIntervals(dict, max(endTime - runStart, 0) + deltaT);
     }
 }
 

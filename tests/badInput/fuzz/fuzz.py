@@ -113,10 +113,11 @@ class Base(object):
     project's setEntry; SOIL: setMaterialPoints makes a cloud; ZERO_ORIG:
     0.orig copied to 0 (restore0Dir); EXPR: setExprFields (hydrostatic
     water); PARALLEL: decomposed on 2 ranks, run with mpirun; UTILITIES:
-    OpenFOAM's programs run after blockMesh (setFields for alpha.water)."""
+    OpenFOAM's programs run after blockMesh (setFields for alpha.water);
+    CI: in the CI sample (else only with --full or --bases)."""
 
     def __init__(self, name, tutorial, edits, soil=False, zero_orig=False,
-                 expr=False, parallel=False, utilities=()):
+                 expr=False, parallel=False, utilities=(), ci=True):
         self.name = name
         self.tutorial = tutorial
         self.edits = edits
@@ -124,6 +125,7 @@ class Base(object):
         self.zero_orig = zero_orig
         self.expr = expr
         self.utilities = utilities
+        self.ci = ci
         self.parallel = parallel
         self.dir = os.path.join(RUN, 'base', name)
         self.ok = False
@@ -215,6 +217,18 @@ BASES = [
           ('system/controlDict', 'functions/cylinderForces/writeInterval',
            '1')] + _control(1.0 / 300),
          zero_orig=True, expr=True),
+    # Heavier scenes, by hand (--full or --bases): the levee overtopped
+    # (free surface, soil, two-way drag, porous flow, buoyancy, erosion)
+    # and Terzaghi's consolidation (the surfaceLoad effect)
+    Base('leveeOvertopping', 'coupled/leveeOvertopping',
+         [('system/blockMeshDict', 'n1', '10'),
+          ('system/blockMeshDict', 'n2', '66'),
+          ('system/blockMeshDict', 'n3', '4'),
+          ('system/blockMeshDict', 'ny', '30'),
+          ('system/blockMeshDict', 'dz', '0.02')] + _control(0.001),
+         soil=True, zero_orig=True, expr=True, ci=False),
+    Base('terzaghiConsolidation', 'coupled/terzaghiConsolidation',
+         _control(1.25e-4), soil=True, zero_orig=True, expr=True, ci=False),
 ]
 
 # Dictionaries that belong to OpenFOAM's mesh and field utilities, run once
@@ -1197,6 +1211,8 @@ def main():
                   % (', '.join(unknown), ', '.join(b.name for b in BASES)))
             return 1
         BASES[:] = [b for b in BASES if b.name in names]
+    elif not args.full:
+        BASES[:] = [b for b in BASES if b.ci]
     serial = [b for b in BASES if not b.parallel]
     errors = {}
 

@@ -88,7 +88,8 @@ void Foam::physicsEffects::freeSurface::checkAlpha() const
                 << " 0 gas): set it with setFields or setExprFields"
                 << exit(FatalError);
         }
-        if (a > 0)
+        // (as the surface sets its nodes: round-off above 0 is gas)
+        if (a > lbmFreeSurface::alphaRoundOff)
         {
             ++nLiquid;
         }
@@ -96,7 +97,8 @@ void Foam::physicsEffects::freeSurface::checkAlpha() const
     if (returnReduce(nLiquid, sumOp<label>()) == 0)
     {
         FatalErrorInFunction
-            << "alpha.water in " << file << " is 0 everywhere: freeSurface"
+            << "alpha.water in " << file << " is 0 everywhere (at most "
+            << lbmFreeSurface::alphaRoundOff << "): freeSurface"
             << " has no water to simulate." << nl
             << "    Set the water's cells to 1 (setFields with a"
             << " boxToCell, as for interFoam), or remove freeSurface from"
