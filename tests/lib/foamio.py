@@ -227,3 +227,30 @@ def read_cloud(case, time, field, cloud='materialPoints', by_identity=True):
         if order is not None and len(order) == len(data):
             data = data[order]
     return data
+
+
+def post_processing(case, name, file):
+    """The rows of postProcessing/<name>/<start>/<file> over every start
+    folder in time order, as numbers (a vector's parentheses dropped): a
+    restart writes a new start folder, whose rows replace the earlier
+    ones from its start time on. An empty array if there is none."""
+    root = os.path.join(case, 'postProcessing', name)
+    rows = []
+    if not os.path.isdir(root):
+        return np.zeros((0, 0))
+    number = re.compile(r'[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?')
+    for start in sorted(os.listdir(root), key=float):
+        path = os.path.join(root, start, file)
+        if not os.path.isfile(path):
+            continue
+        rows = [r for r in rows if r[0] <= float(start)]
+        for line in open(path):
+            if line.startswith('#') or not line.strip():
+                continue
+            values = [float(v) for v in number.findall(line)]
+            if values and values[0] > float(start) - 1e-12 * max(1.0, abs(float(start))):
+                rows.append(values)
+    if not rows:
+        return np.zeros((0, 0))
+    width = min(len(r) for r in rows)
+    return np.array([r[:width] for r in rows])

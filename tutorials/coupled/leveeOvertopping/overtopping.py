@@ -31,32 +31,9 @@ import foamio
 TOE_UP, CREST_UP, CREST_DOWN, TOE_DOWN, HEIGHT, DZ = 0.3, 0.7, 0.9, 1.5, 0.4, 0.01
 
 
-def series(case, name, file):
-    """The rows of postProcessing/<name>/<start>/<file> over every start
-    folder (a restart writes a new one): a later start replaces the rows
-    from its start time on."""
-    root = os.path.join(case, 'postProcessing', name)
-    rows = np.zeros((0, 0))
-    if not os.path.isdir(root):
-        return rows
-    for start in sorted(os.listdir(root), key=float):
-        path = os.path.join(root, start, file)
-        if not os.path.isfile(path):
-            continue
-        more = np.loadtxt(path, comments='#', ndmin=2)
-        if more.shape[0] == 0:
-            continue
-        if rows.shape[0]:
-            rows = np.vstack([rows[rows[:, 0] <= float(start)][:, :more.shape[1]],
-                              more[more[:, 0] > float(start)]])
-        else:
-            rows = more
-    return rows
-
-
 def meter(case, name):
     """Time and flux [m2/s per metre] of a surfaceFieldValue meter."""
-    rows = series(case, name, 'surfaceFieldValue.dat')
+    rows = foamio.post_processing(case, name, 'surfaceFieldValue.dat')
     if rows.shape[0] == 0 or rows.shape[1] < 2:
         return np.zeros(0), np.zeros(0)
     return rows[:, 0], rows[:, 1] / DZ
@@ -77,7 +54,7 @@ def main():
 
     times = foamio.times(case)
     # (the totals since erosion started: a restart carries them on)
-    rows = series(case, 'erosion', 'erosion.dat')
+    rows = foamio.post_processing(case, 'erosion', 'erosion.dat')
     if rows.shape[0] == 0:
         sys.exit('%s: no postProcessing/erosion/<start>/erosion.dat' % case)
     tIn, qIn = meter(case, 'reservoirMeter')
