@@ -247,31 +247,25 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
 
     densest_ = 0;
     largest_ = 0;
-    const bool restarted = readState();
+    readState();
     if (law_->surface())
     {
         // The densest soil's solid fraction and the largest point at the
         // run's start; a restart takes them from the written time (the
         // points' porosity follows their deformation since)
-        if (!restarted || !(densest_ > 0))
+        if (!(densest_ > 0))
         {
-            scalar densest = 0;
-            scalar largest = 0;
             const materialPoints& pts = soil_.mpm().points();
             forAll(pts.porosity, p)
             {
-                densest = max(densest, 1 - pts.porosity[p]);
-                largest = max(largest, pts.V0[p]);
+                densest_ = max(densest_, 1 - pts.porosity[p]);
+                largest_ = max(largest_, pts.V0[p]);
             }
-            reduce(densest, maxOp<scalar>());
-            reduce(largest, maxOp<scalar>());
-            densest_ = densest;
-            largest_ = largest;
+            reduce(densest_, maxOp<scalar>());
+            reduce(largest_, maxOp<scalar>());
         }
-        const scalar densest = densest_;
-        const scalar largest = largest_;
         surfaceSolidFraction_ =
-            dict_.getOrDefault<scalar>("surfaceSolidFraction", 0.5*densest);
+            dict_.getOrDefault<scalar>("surfaceSolidFraction", 0.5*densest_);
         if (!(surfaceSolidFraction_ > 0) || !(surfaceSolidFraction_ < 1))
         {
             FatalIOErrorInFunction(dict_)
@@ -290,7 +284,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
                 << " mass given to the water), in [0, 1)"
                 << exit(FatalIOError);
         }
-        removeVolume_ = minVolumeFraction_*largest;
+        removeVolume_ = minVolumeFraction_*largest_;
         findOpenNodes();
         const label nBox = fluid_.lattice().nBox();
         phi_.setSize(nBox, Zero);
@@ -655,7 +649,7 @@ void Foam::physicsEffects::erosion::evolve(const sceneStage stage)
 }
 
 
-bool Foam::physicsEffects::erosion::readState()
+void Foam::physicsEffects::erosion::readState()
 {
     // Each processor's file holds the global totals; a processor without
     // uniform/ (v1912's decomposePar may not copy it) takes them from the
@@ -672,7 +666,7 @@ bool Foam::physicsEffects::erosion::readState()
         {
             susp.ignoreWrittenBalance();
         }
-        return false;
+        return;
     }
 
     // The totals and the suspensions' balances (content at the start, out
@@ -767,7 +761,6 @@ bool Foam::physicsEffects::erosion::readState()
             << sum(eroded) << " kg, filtered " << sum(filtered) << " kg"
             << endl;
     }
-    return true;
 }
 
 
