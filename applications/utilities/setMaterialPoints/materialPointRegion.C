@@ -19,6 +19,8 @@ License
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
+const Foam::word Foam::materialPointRegion::voidMaterial("none");
+
 const Foam::Enum<Foam::materialPointRegion::stressType>
 Foam::materialPointRegion::stressTypeNames
 ({
@@ -176,12 +178,45 @@ Foam::materialPointRegion::materialPointRegion
 
     const wordList materialNames(materialsDict.toc());
     const word mat = dict_.get<word>("material");
+    if (mat == voidMaterial)
+    {
+        // A void: nothing else of the region is read (an entry that would
+        // set a property of points it never makes is refused, not ignored)
+        if (materialNames.found(voidMaterial))
+        {
+            FatalIOErrorInFunction(materialsDict)
+                << "constant/soilProperties: a material named "
+                << voidMaterial << " is not allowed: region " << name_
+                << " of setMaterialPointsDict uses material " << voidMaterial
+                << " for a void (no points). Rename the material"
+                << exit(FatalIOError);
+        }
+        for
+        (
+            const word key
+          : {"velocity", "porosity", "finesContent", "stress",
+             "geostaticCoeffs"}
+        )
+        {
+            if (dict_.found(key, keyType::LITERAL))
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "Region " << name_ << ": " << key << " is not"
+                    << " allowed in a region of material " << voidMaterial
+                    << " (a void: it gets no points). Remove it, or give the"
+                    << " region a material of constant/soilProperties "
+                    << materialNames << exit(FatalIOError);
+            }
+        }
+        return;
+    }
     material_ = materialNames.find(mat);
     if (material_ < 0)
     {
         FatalIOErrorInFunction(dict_)
             << "Region " << name_ << ": material " << mat << " is not in"
             << " constant/soilProperties materials " << materialNames
+            << " (or " << voidMaterial << " for a void)"
             << exit(FatalIOError);
     }
     rho_ = materialsDict.subDict(mat).get<scalar>("rho");

@@ -45,6 +45,7 @@ Description
                 min         (0 0 -1);
                 max         (20 10 1);
                 material    sand;               // from constant/soilProperties
+                                                // (none: a void, no points)
                 // velocity, porosity, stress, geostaticCoeffs: see
                 // materialPointRegion.H
             }
@@ -218,6 +219,15 @@ static labelList assignRegions
         }
     }
 
+    // A void keeps its sub-cells from the regions after it, and seeds none
+    forAll(region, i)
+    {
+        if (region[i] >= 0 && regions[region[i]].isVoid())
+        {
+            region[i] = -1;
+        }
+    }
+
     forAll(regionCount, r)
     {
         if
@@ -228,7 +238,14 @@ static labelList assignRegions
         {
             WarningInFunction
                 << "Region " << regions[r].name() << " lies entirely"
-                << " inside regions listed before it: it gets no points" << endl;
+                << " inside regions listed before it: it gets no points"
+                << (
+                       regions[r].isVoid()
+                     ? " (a void, material none, carves only the regions"
+                       " listed after it: list it first)"
+                     : ""
+                   )
+                << endl;
         }
         else if (returnReduce(regionCount[r], sumOp<label>()) == 0)
         {
@@ -462,8 +479,15 @@ static void report
     forAll(regions, r)
     {
         Info<< "    " << regions[r].name() << ": "
-            << returnReduce(regionCount[r], sumOp<label>()) << " points of "
-            << materialNames[regions[r].material()] << nl;
+            << returnReduce(regionCount[r], sumOp<label>());
+        if (regions[r].isVoid())
+        {
+            Info<< " sub-cells left empty (material none)" << nl;
+        }
+        else
+        {
+            Info<< " points of " << materialNames[regions[r].material()] << nl;
+        }
     }
     Info<< "    total " << returnReduce(points.size(), sumOp<label>())
         << " points (" << n << " per cell and direction), "

@@ -424,6 +424,41 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         )
     );
     boundaries_->report(Info);
+
+    // A pressure link whose wall node's row lies across a processor
+    // boundary takes all the populations of that halo node: its
+    // neighbour sends them all
+    {
+        const labelList& from = boundaries_->pressureLinkSources();
+        const List<unsigned char>& kind = lattice_.kind();
+        boolList haloSource(lattice_.nBox(), false);
+        bool any = false;
+        for (const label y : from)
+        {
+            if (kind[y] == latticeMesh::HALO)
+            {
+                haloSource[y] = true;
+                any = true;
+            }
+        }
+        if (returnReduce(any, orOp<bool>()))
+        {
+            const labelListList& recvNodes = halo_.recvNodes();
+            labelListList needed(halo_.recvComponents());
+            forAll(recvNodes, proci)
+            {
+                for (const label h : recvNodes[proci])
+                {
+                    if (haloSource[h])
+                    {
+                        needed[proci] = identity(Q);
+                        break;
+                    }
+                }
+            }
+            halo_.setComponents(needed);
+        }
+    }
     if
     (
         units_.tau() - 0.5 < pressurePatchTauMinusHalf_
@@ -438,8 +473,9 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
             << " the node beside them (Guo, Zheng & Shi 2002), which a"
             << " collision that relaxes it at one rate turns over nearly"
             << " whole each step near tau = 1/2, and a flow through the"
-            << " patch can grow from it (a tank filling through a patch:"
-            << " unstable at tau - 1/2 = 0.031, stable at 0.046)." << nl
+            << " patch can grow from it (a tank filling through a patch"
+            << " with BGK: unstable at tau - 1/2 = 0.0077, stable at 0.015;"
+            << " regularized stable at 0.0077)." << nl
             << "    To stay stable with a flow through the patch: collisionModel"
             << " TRT or MRT (they hold), or tau - 1/2 above "
             << pressurePatchTauMinusHalf_ << " (tau - 1/2 = 3 nu deltaT/dx^2)."
@@ -822,7 +858,7 @@ void Foam::latticeBoltzmannFluid::streamScratch(List<vector>& G)
     const label nBox = lattice_.nBox();
     const List<labelVector>& c = velocitySet_->c();
     halo_.exchangeSelected(scratch_.data(), nBox);
-    boundaries_->fillHomogeneous(scratch_.data());
+    boundaries_->fillHomogeneous(scratch_.data(), freeSurface_.get());
     G.setSize(nBox);
     G = Zero;
     for (const label n : lattice_.cellNode())

@@ -192,9 +192,10 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
         {
             FatalError
                 << "    The node is beside a pressure patch, whose links take"
-                << " its non-equilibrium part: with " << model << " near"
-                << " tau = 1/2 a flow through the patch grows from it;"
-                << " TRT and MRT hold." << nl;
+                << " the non-equilibrium part of the nodes beside them: with "
+                << model << " near tau = 1/2 a flow through the patch can grow"
+                << " from it; TRT and MRT hold (regularized held to"
+                << " tau - 1/2 = 0.0077 where BGK did not)." << nl;
         }
         if (freeSurface_ && besidePatch)
         {

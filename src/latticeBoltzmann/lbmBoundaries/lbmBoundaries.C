@@ -350,7 +350,7 @@ Foam::lbmBoundaries::lbmBoundaries
 
     DynamicList<label> copyGhost, copySource;
     DynamicList<scalar> copyValue;
-    DynamicList<label> abbGhost, abbSource, abbNode, abbDir;
+    DynamicList<label> abbGhost, abbSource, abbNode, abbDir, abbFrom;
     DynamicList<label> slipNode, slipDir, slipGhost, slipSource;
     DynamicList<scalar> abbRho;
     DynamicList<FixedList<label, 4>> abbFaces;
@@ -459,6 +459,34 @@ Foam::lbmBoundaries::lbmBoundaries
                     abbSource.append(opp[q]*nBox + x);
                     abbNode.append(x);
                     abbDir.append(q);
+                    {
+                        // The wall node's row: x less the link's parts
+                        // along the axes it does not leave the domain by
+                        labelVector tangential(c[q]);
+                        for (direction a = 0; a < 3; ++a)
+                        {
+                            if
+                            (
+                                c[q][a] != 0
+                             && kind[x - c[q][a]*stride[a]]
+                             == latticeMesh::WALL
+                            )
+                            {
+                                tangential[a] = 0;
+                            }
+                        }
+                        const label y = x - offsetOf(tangential);
+                        abbFrom.append
+                        (
+                            tangential != c[q]
+                         && (
+                                kind[y] == latticeMesh::OWNED
+                             || kind[y] == latticeMesh::HALO
+                            )
+                         && !obstacles.solid(y)
+                          ? y : x
+                        );
+                    }
                     abbFaces.append
                     (
                         crossingFaces(x, q, fa.second(), patchi, patchFacei)
@@ -628,6 +656,7 @@ Foam::lbmBoundaries::lbmBoundaries
     abbSource_.transfer(abbSource);
     abbNode_.transfer(abbNode);
     abbDir_.transfer(abbDir);
+    abbFrom_.transfer(abbFrom);
     abbRho_.transfer(abbRho);
     abbFaces_.transfer(abbFaces);
     varyingCopy_.transfer(varyingCopy);
@@ -810,14 +839,18 @@ void Foam::lbmBoundaries::fill
             {
                 continue;
             }
+            // (the wall node's row node y has no water of its own where
+            // it is gas: x's velocity and non-equilibrium then)
+            const bool fromItself = freeSurface->gas(abbFrom_[i]);
             f[sl.abbGhost[i]] =
                 freeSurface->interface(x) && dryPressureLink(i, rhoGas)
               ? pressureLinkValue
                 (
                     f, layout, porosity, i,
-                    freeSurface->gasLinkDensity(x, abbDir_[i], g)
+                    freeSurface->gasLinkDensity(x, abbDir_[i], g),
+                    fromItself
                 )
-              : pressureLinkValue(f, layout, porosity, i);
+              : pressureLinkValue(f, layout, porosity, i, -1, fromItself);
         }
         return;
     }
@@ -828,7 +861,11 @@ void Foam::lbmBoundaries::fill
 }
 
 
-void Foam::lbmBoundaries::fillHomogeneous(scalar* f) const
+void Foam::lbmBoundaries::fillHomogeneous
+(
+    scalar* f,
+    const lbmFreeSurface* freeSurface
+) const
 {
     forAll(copyGhost_, i)
     {
@@ -843,7 +880,10 @@ void Foam::lbmBoundaries::fillHomogeneous(scalar* f) const
     const label nBox = lattice_.nBox();
     forAll(abbGhost_, i)
     {
-        f[abbGhost_[i]] = f[abbDir_[i]*nBox + abbNode_[i]];
+        const label y =
+            freeSurface && freeSurface->gas(abbFrom_[i])
+          ? abbNode_[i] : abbFrom_[i];
+        f[abbGhost_[i]] = f[abbDir_[i]*nBox + y];
     }
 }
 

@@ -100,7 +100,9 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     weight_.setSize(nBox, Zero);
 
     // The lattice's gradient stencil at a node next to a wall or pressure
-    // patch sees the node's own value beyond it, so it gives half the
+    // patch sees the node's own value beyond it (a pressure patch's
+    // diagonal links: the value of the node beside it on their wall
+    // node's row), so it gives half the
     // gradient normal to the boundary there (the water's balance is built
     // on that same stencil and needs it as it is). The soil's pore-pressure
     // force takes the full gradient: per node and direction, the stencil's

@@ -14,10 +14,11 @@ Description
     excessShearStress, Shields).
 
     The surface. A water node n (owned, nodal solid fraction phi_n below
-    surfaceSolidFraction phi_s) is on the surface when its neighbour
-    inward, n - e, is at or above phi_s; e is the lattice axis nearest the
-    outward normal -grad(phi)/|grad(phi)|. The surface lies between the
-    two, delta = (phi_s - phi_n)/(phi_(n-e) - phi_n) cells from n.
+    surfaceSolidFraction phi_s) is on the surface when a neighbour inward
+    along an axis d, n - sign(m_d) e_d, is at or above phi_s, m the
+    outward normal -grad(phi)/|grad(phi)|; e is the nearest such axis to
+    m. The surface lies between n and n - e, delta = (phi_s - phi_n)/
+    (phi_(n-e) - phi_n) cells from n.
 
     The wall shear stress. The water's viscous stress sigma (the lattice's
     own non-equilibrium moment, latticeBoltzmannFluid::viscousStress) gives
@@ -34,8 +35,8 @@ Description
     about 1% along a wall's normal: the fit over four nodes averages it.)
 
     The eroded mass. Each surface node erodes the law's rate times its
-    share of the surface's area, dx^(d-1)/|m.e| (the surface's area over
-    its projection on the face normal to e), in the step's time. The mass
+    share of the surface's area, dx^(D-1) sum |m_d| over the axes d it
+    crosses the surface along (see surfaceDemand), in the step's time. The mass
     is taken from the points in the node's support in proportion to their
     weight there (the outer points go first; a weight on a node beyond a
     wall counts for the node it folds into, as the soil's own transfers
@@ -192,21 +193,44 @@ void Foam::physicsEffects::erosion::surfaceDemand()
         }
         const vector normal = -grad/magGrad;
 
-        // The axis nearest the normal, and the neighbour inward
-        label axis = 0;
-        for (label d = 1; d < nDim; ++d)
+        // The axes along which the level lies between n and its neighbour
+        // inward, and the surface's area they stand for: each such
+        // crossing along axis d stands for a face dx^(D-1) of the
+        // surface's projection on the plane normal to d, an area
+        // dx^(D-1)/|m_d| of the surface (D the lattice's dimensions); with
+        // the axes weighted by m_d^2 (their sum is 1) a crossing along d
+        // counts dx^(D-1) |m_d|, and
+        // the area is right on average for any orientation, a node where
+        // the level crosses along two axes (a staircase's corner)
+        // counting both. (Counted along the axis nearest the normal alone,
+        // dx^(d-1)/|m.e|, the level's crossings along the other axis near
+        // 45 degrees were nobody's: a quarter of a pipe 4 cells in radius
+        // had 11.2 mm of its 12.8 mm of wall, and eroded 12% slow.) The
+        // stress is fitted along the crossing axis nearest the normal
+        label axis = -1;
+        scalar areaFactor = 0;
+        for (label d = 0; d < nDim; ++d)
         {
-            if (mag(normal[d]) > mag(normal[axis]))
+            if (normal[d] == 0)
             {
-                axis = d;
+                continue;
+            }
+            const label in = n - (normal[d] > 0 ? stride[d] : -stride[d]);
+            if (inside(in) && phi_[in] >= phiS)
+            {
+                areaFactor += mag(normal[d]);
+                if (axis < 0 || mag(normal[d]) > mag(normal[axis]))
+                {
+                    axis = d;
+                }
             }
         }
-        const label step = normal[axis] > 0 ? stride[axis] : -stride[axis];
-        const label in = n - step;
-        if (!inside(in) || !(phi_[in] >= phiS))
+        if (axis < 0)
         {
             continue;
         }
+        const label step = normal[axis] > 0 ? stride[axis] : -stride[axis];
+        const label in = n - step;
         const scalar delta = (phiS - phi_[n])/(phi_[in] - phi_[n]);
 
         // The water nodes outward clear of the soil: the first, k0 <= 2
@@ -281,7 +305,7 @@ void Foam::physicsEffects::erosion::surfaceDemand()
                 )*lattice.cellVolume();
             demand_[n] = max
             (
-                min(rate*columnArea/mag(normal[axis])*dt, room),
+                min(rate*columnArea*areaFactor*dt, room),
                 scalar(0)
             );
         }
