@@ -86,6 +86,67 @@ def series(case, name, file):
     return rows
 
 
+
+
+def flowAt(flow, t, scale):
+    """The flow meter's reading at time t over scale (None: no reading)"""
+    near = [r for r in flow if abs(r[0] - t) < 1e-9*max(1, t)]
+    return abs(near[-1][1])/scale if near else None
+
+
+def printPiezometers(piezo, dP):
+    """The piezometers at the last sampled time against the linear drop"""
+    if piezo:
+        last = piezo[-1]
+        for k, x in enumerate((0.25, 0.5, 0.75)):
+            pa = dP*(1 - x)
+            print('piezometer %g %.3f %.6g %.6g %.6f'
+                  % (last[0], x, last[1 + k], pa, last[1 + k]/pa - 1))
+
+
+def newFigure():
+    """matplotlib without a display, and a row of three panels"""
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.4))
+    return fig, axes
+
+def plotRadiusAndDischarge(axes, rows, R0, Rc, tEr, dx, radiusTitle, flow,
+                           power, qLabel, qTitle):
+    """The first two panels: R/R0 against Bonelli & Brivois's solution, and
+    the flow meter's discharge (times and values over the reference)
+    against Poiseuille's, which goes as (R/R0)^power"""
+    ts = [r[0] for r in rows]
+    tt = [i*ts[-1]/200 for i in range(201)]
+    analytic = [(Rc + (R0 - Rc)*math.exp(x/tEr))/R0 for x in tt]
+    ax = axes[0]
+    ax.plot(tt, analytic, 'k-',
+            label='Bonelli & Brivois (2008): exp(t/t_er), t_er = %.0f s' % tEr)
+    ax.plot(ts, [r[1] for r in rows], 'o', color='tab:red',
+            label='mpmLbmFoam, dx = R0/%d' % round(R0/dx))
+    ax.set_xlabel('t [s]')
+    ax.set_ylabel('R/R0')
+    ax.set_title(radiusTitle)
+    ax.grid(alpha=0.3)
+    ax.legend(loc='upper left', fontsize=8)
+
+    ax = axes[1]
+    if flow:
+        ax.plot([f[0] for f in flow], [f[1] for f in flow], '-',
+                color='tab:blue', lw=1.5,
+                label='flow meter (outlet), every 0.5 s')
+    ax.plot(tt, [r**power for r in analytic], 'k-',
+            label='Poiseuille with R0 exp(t/t_er): (R/R0)$^%d$' % power)
+    ax.plot(ts, [r[1]**power for r in rows], 'o', color='tab:red', ms=4,
+            label='Poiseuille with the measured R')
+    ax.set_xlabel('t [s]')
+    ax.set_ylabel(qLabel)
+    ax.set_title(qTitle, fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(loc='upper left', fontsize=8)
+
+
 def main():
     args = sys.argv[1:]
     case = args[0]
@@ -151,23 +212,14 @@ def main():
     piezo = series(case, 'piezometers', 'p')
     q0 = 2.0/3.0*R0**3*G/mu
 
-    def flowAt(t):
-        near = [r for r in flow if abs(r[0] - t) < 1e-9*max(1, t)]
-        return abs(near[-1][1])/depth if near else None
-
     if '--flow' in args:
         for t, RR0, _, _ in rows:
-            q = flowAt(t)
+            q = flowAt(flow, t, depth)
             if q is None or t <= 0:
                 continue
             qP = 2.0/3.0*(RR0*R0)**3*G/mu
             print('Q %g %.6g %.6g %.6f' % (t, q, qP, q/qP - 1))
-        if piezo:
-            last = piezo[-1]
-            for k, x in enumerate((0.25, 0.5, 0.75)):
-                pa = dP*(1 - x)
-                print('piezometer %g %.3f %.6g %.6g %.6f'
-                      % (last[0], x, last[1 + k], pa, last[1 + k]/pa - 1))
+        printPiezometers(piezo, dP)
 
     if '--tau' in args:
         t = foamio.latest_time(case)
@@ -180,39 +232,11 @@ def main():
             print('tau %s %.6g %.6g %.6f' % (side, mean, R0*G, mean/(R0*G) - 1))
 
     if png:
-        import matplotlib
-        matplotlib.use('Agg')
-        import matplotlib.pyplot as plt
-        fig, axes = plt.subplots(1, 3, figsize=(15, 4.4))
-        ts = [r[0] for r in rows]
-        tt = [i*ts[-1]/200 for i in range(201)]
-        ax = axes[0]
-        ax.plot(tt, [(Rc + (R0 - Rc)*math.exp(x/tEr))/R0 for x in tt], 'k-',
-                label='Bonelli & Brivois (2008): exp(t/t_er), t_er = %.0f s'
-                % tEr)
-        ax.plot(ts, [r[1] for r in rows], 'o', color='tab:red',
-                label='mpmLbmFoam, dx = R0/%d' % round(R0/dx))
-        ax.set_xlabel('t [s]')
-        ax.set_ylabel('R/R0')
-        ax.set_title('Half-width of the slot')
-        ax.grid(alpha=0.3)
-        ax.legend(loc='upper left', fontsize=8)
-
-        ax = axes[1]
-        if flow:
-            ax.plot([r[0] for r in flow], [abs(r[1])/depth/q0 for r in flow],
-                    '-', color='tab:blue', lw=1.5,
-                    label='flow meter (outlet), every 0.5 s')
-        ax.plot(tt, [((Rc + (R0 - Rc)*math.exp(x/tEr))/R0)**3 for x in tt],
-                'k-', label='Poiseuille with R0 exp(t/t_er): (R/R0)$^3$')
-        ax.plot(ts, [r[1]**3 for r in rows], 'o', color='tab:red', ms=4,
-                label='Poiseuille with the measured R')
-        ax.set_xlabel('t [s]')
-        ax.set_ylabel('q/q0')
-        ax.set_title('Discharge, q0 = (2/3) R0$^3$ (dP/L)/mu = %.3g m$^2$/s'
-                     % q0, fontsize=10)
-        ax.grid(alpha=0.3)
-        ax.legend(loc='upper left', fontsize=8)
+        fig, axes = newFigure()
+        plotRadiusAndDischarge(
+            axes, rows, R0, Rc, tEr, dx, 'Half-width of the slot',
+            [(r[0], abs(r[1])/depth/q0) for r in flow], 3, 'q/q0',
+            'Discharge, q0 = (2/3) R0$^3$ (dP/L)/mu = %.3g m$^2$/s' % q0)
 
         ax = axes[2]
         if piezo:
@@ -298,22 +322,14 @@ def pipe(case, args, png, nx, ny, nz, dx, length, mu, kEr, tauC, rhoD, dP,
     piezo = series(case, 'piezometers', 'p')
     Q0 = math.pi*R0**4*G/(8*mu) if R0 else 1
 
-    def flowAt(t):
-        near = [r for r in flow if abs(r[0] - t) < 1e-9*max(1, t)]
-        return abs(near[-1][1])/share if near else None
     if '--flow' in args:
         for t, RR0, _, _ in rows:
-            q = flowAt(t)
+            q = flowAt(flow, t, share)
             if q is None or t <= 0:
                 continue
             qP = Q0*RR0**4
             print('Q %g %.6g %.6g %.6f' % (t, q, qP, q/qP - 1))
-        if piezo:
-            last = piezo[-1]
-            for k, x in enumerate((0.25, 0.5, 0.75)):
-                pa = dP*(1 - x)
-                print('piezometer %g %.3f %.6g %.6g %.6f'
-                      % (last[0], x, last[1 + k], pa, last[1 + k]/pa - 1))
+        printPiezometers(piezo, dP)
 
     if '--tau' in args:
         t = foamio.latest_time(case)
@@ -333,40 +349,11 @@ def pipe(case, args, png, nx, ny, nz, dx, length, mu, kEr, tauC, rhoD, dP,
               % (mean, ref, mean/ref - 1, len(vals), spread))
 
     if png:
-        import matplotlib
-        matplotlib.use('Agg')
-        import matplotlib.pyplot as plt
-        fig, axes = plt.subplots(1, 3, figsize=(15, 4.4))
-        ts = [r[0] for r in rows]
-        tt = [i*ts[-1]/200 for i in range(201)]
-        ax = axes[0]
-        ax.plot(tt, [(Rc + (R0 - Rc)*math.exp(x/tEr))/R0 for x in tt], 'k-',
-                label='Bonelli & Brivois (2008): exp(t/t_er), t_er = %.0f s'
-                % tEr)
-        ax.plot(ts, [r[1] for r in rows], 'o', color='tab:red',
-                label='mpmLbmFoam, dx = R0/%d' % round(R0/dx))
-        ax.set_xlabel('t [s]')
-        ax.set_ylabel('R/R0')
-        ax.set_title('Radius of the pipe (its area)')
-        ax.grid(alpha=0.3)
-        ax.legend(loc='upper left', fontsize=8)
-
-        ax = axes[1]
-        if flow:
-            ax.plot([r[0] for r in flow],
-                    [abs(r[1])/share/Q0 for r in flow],
-                    '-', color='tab:blue', lw=1.5,
-                    label='flow meter (outlet), every 0.5 s')
-        ax.plot(tt, [((Rc + (R0 - Rc)*math.exp(x/tEr))/R0)**4 for x in tt],
-                'k-', label='Poiseuille with R0 exp(t/t_er): (R/R0)$^4$')
-        ax.plot(ts, [r[1]**4 for r in rows], 'o', color='tab:red', ms=4,
-                label='Poiseuille with the measured R')
-        ax.set_xlabel('t [s]')
-        ax.set_ylabel('Q/Q0')
-        ax.set_title('Discharge, Q0 = pi R0$^4$ (dP/L)/(8 mu) = %.3g m$^3$/s'
-                     % Q0, fontsize=10)
-        ax.grid(alpha=0.3)
-        ax.legend(loc='upper left', fontsize=8)
+        fig, axes = newFigure()
+        plotRadiusAndDischarge(
+            axes, rows, R0, Rc, tEr, dx, 'Radius of the pipe (its area)',
+            [(r[0], abs(r[1])/share/Q0) for r in flow], 4, 'Q/Q0',
+            'Discharge, Q0 = pi R0$^4$ (dP/L)/(8 mu) = %.3g m$^3$/s' % Q0)
 
         ax = axes[2]
         phi = None
