@@ -620,32 +620,6 @@ Foam::lbmBoundaries::lbmBoundaries
         bodyLinks_.clear();
     }
 
-    // The nodes behind the links whose density the links take: owned here,
-    // or a halo image whose owner computes it (the halo carries only the
-    // populations its owned neighbours pull, not a node's density)
-    if (bodyLinks_.size())
-    {
-        const haloExchange& halo = lattice_.halo();
-        scalarList behind(nBox, Zero);
-        for (const label y : bodyBehind_)
-        {
-            if (y >= 0)
-            {
-                behind[y] = 1;
-            }
-        }
-        halo.addToOwners({haloExchange::field(behind)});
-        DynamicList<label> rhoNodes;
-        for (const label n : lattice_.cellNode())
-        {
-            if (behind[n] > 0)
-            {
-                rhoNodes.append(n);
-            }
-        }
-        behindRhoNode_.transfer(rhoNodes);
-        behindRho_.setSize(nBox, Zero);
-    }
     copySource_.transfer(copySource);
     copyValue_.transfer(copyValue);
     slipNode_.transfer(slipNode);
@@ -716,30 +690,6 @@ const Foam::lbmBoundaries::linkSlots& Foam::lbmBoundaries::slots
 }
 
 
-void Foam::lbmBoundaries::behindDensity
-(
-    const scalar* f,
-    const lbmLayout& layout
-) const
-{
-    if (bodyLinks_.empty())
-    {
-        return;
-    }
-    const label Q = vs_.Q();
-    for (const label n : behindRhoNode_)
-    {
-        scalar rho = 0;
-        for (label q = 0; q < Q; ++q)
-        {
-            rho += f[layout.at(q, n)];
-        }
-        behindRho_[n] = rho;
-    }
-    lattice_.halo().copyToHalo({haloExchange::field(behindRho_)});
-}
-
-
 void Foam::lbmBoundaries::fill
 (
     scalar* f,
@@ -773,7 +723,6 @@ void Foam::lbmBoundaries::fill
     // at each node, the node's own imbalance changed the flow near the
     // wall: Schaefer-Turek's C_L went from 0.0% to 2.7% off and C_D's
     // order from 2.4 to 1.4. (A gas node's links count for nothing.)
-    behindDensity(f, layout);
     forAll(bodyGhost_, i)
     {
         const scalar in =

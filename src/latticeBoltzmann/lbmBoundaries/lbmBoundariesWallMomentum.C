@@ -44,12 +44,6 @@ void Foam::lbmBoundaries::wallMomentum
     const polyBoundaryMesh& patches = lattice_.mesh().boundaryMesh();
     const scalar dx = lattice_.dx();
 
-    if (!freeSurface)
-    {
-        // (the links into bodies recomputed: the densities behind them)
-        behindDensity(f, layout);
-    }
-
     P = Zero;
     M = Zero;
     Prest = Zero;
