@@ -141,18 +141,30 @@ Foam::lbmObstacles::lbmObstacles
     }
 
     // The body of every box node (owned, halo and wall nodes alike: a
-    // link from a processor's node sees the same bodies as the serial run)
+    // link from a processor's node sees the same bodies as the serial run;
+    // a halo image across a cyclic face tests its owner's position, so
+    // both see the same images)
     const label nBox = lattice_.nBox();
     pointField positions(nBox);
     body_.setSize(nBox, -1);
+    // (an image that cannot reach the box is not searched)
+    boundBox box(lattice_.mesh().bounds());
+    const scalar margin = (lattice_.haloWidth() + 2)*lattice_.dx();
+    box.min() -= vector::uniform(margin);
+    box.max() += vector::uniform(margin);
     for (const vector& shift : images_)
     {
         forAll(positions, n)
         {
-            positions[n] = lattice_.position(n) + shift;
+            positions[n] = wrappedPosition(n) + shift;
         }
         forAll(surfaces_, b)
         {
+            const boundBox bb(surfaces_[b].bounds());
+            if (!box.overlaps(boundBox(bb.min() - shift, bb.max() - shift)))
+            {
+                continue;
+            }
             List<volumeType> inside;
             surfaces_[b].getVolumeType(positions, inside);
             forAll(inside, n)
@@ -226,6 +238,21 @@ Foam::lbmObstacles::lbmObstacles
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::point Foam::lbmObstacles::wrappedPosition(const label n) const
+{
+    point p = lattice_.position(n);
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (lattice_.periodic()[d])
+        {
+            const scalar L = lattice_.globalN()[d]*lattice_.dx();
+            p[d] -= std::floor((p[d] - lattice_.origin()[d])/L)*L;
+        }
+    }
+    return p;
+}
+
+
 Foam::scalar Foam::lbmObstacles::wallFraction
 (
     const label x,
@@ -236,17 +263,23 @@ Foam::scalar Foam::lbmObstacles::wallFraction
     {
         return 0.5;
     }
-    // (along the image of the body that holds s: the link's ends shifted
-    // alike, a link across a cyclic face included)
+    // (along the image of the body that holds s, as the constructor
+    // found it: the link's ends shifted alike, a link across a cyclic face
+    // included)
     const searchableSurface& surface = surfaces_[body_[s]];
-    vector shift(Zero);
+    const vector wrap(wrappedPosition(s) - lattice_.position(s));
+    vector shift(wrap);
     for (const vector& image : images_)
     {
         List<volumeType> inside;
-        surface.getVolumeType(pointField(1, lattice_.position(s) + image), inside);
+        surface.getVolumeType
+        (
+            pointField(1, wrappedPosition(s) + image),
+            inside
+        );
         if (inside[0] == volumeType::INSIDE)
         {
-            shift = image;
+            shift = wrap + image;
             break;
         }
     }
