@@ -267,16 +267,13 @@ Foam::scalar Foam::lbmObstacles::wallFraction
     // found it: the link's ends shifted alike, a link across a cyclic face
     // included)
     const searchableSurface& surface = surfaces_[body_[s]];
-    const vector wrap(wrappedPosition(s) - lattice_.position(s));
+    const point wrapped(wrappedPosition(s));
+    const vector wrap(wrapped - lattice_.position(s));
     vector shift(wrap);
     for (const vector& image : images_)
     {
         List<volumeType> inside;
-        surface.getVolumeType
-        (
-            pointField(1, wrappedPosition(s) + image),
-            inside
-        );
+        surface.getVolumeType(pointField(1, wrapped + image), inside);
         if (inside[0] == volumeType::INSIDE)
         {
             shift = wrap + image;
