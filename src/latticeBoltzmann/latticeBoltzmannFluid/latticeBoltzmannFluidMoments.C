@@ -238,7 +238,10 @@ Foam::scalar Foam::latticeBoltzmannFluid::memoryBytes() const
     return returnReduce
     (
         scalar(sizeof(scalar))
-       *(fA_.size() + fB_.size() + 11*Fx_.size() + porosity_.size())
+       *(
+            fA_.size() + fB_.size() + 11*Fx_.size() + porosity_.size()
+          + heldPorosity_.size() + displacementSource_.size()
+         )
       + (freeSurface_ ? freeSurface_->memoryBytes() : 0),
         sumOp<scalar>()
     );

@@ -318,10 +318,16 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
     const vector g = fluid_.latticeAcceleration();
 
     // Pore pressure c_s^2 (rho - 1)/n (lattice units, relative to the
-    // reference) and the porosity
+    // reference) and the porosity. With the porous flow's displacement,
+    // rho is the step's time-centred density, the populations' sum less
+    // half the source they took in this step (see
+    // latticeBoltzmannFluid::displacementSource): the soil and the
+    // porosity term feel the pressure the lattice's own momentum feels
+    const scalarList& source = fluid_.displacementSource();
+    const bool centred = source.size() > 0;
     for (const label n : cellNode)
     {
-        scalar rho = 0;
+        scalar rho = centred ? -0.5*source[n] : 0;
         for (label q = 0; q < Q; ++q)
         {
             rho += f[layout.at(q, n)];
