@@ -187,6 +187,42 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
             << "    - or use collisionModel " << others.c_str()
             << (smagorinsky_ > 0 ? "." : ", or smagorinskyConstant 0.1.")
             << nl;
+        if (porosity_.size())
+        {
+            // (the least porosity within a link: an instability at a
+            // soil's face shows in the water beside it)
+            scalar nMin = porosity_[n];
+            forAll(c, q)
+            {
+                nMin = min
+                (
+                    nMin,
+                    porosity_
+                    [
+                        n + c[q].x()*lattice_.stride().x()
+                      + c[q].y()*lattice_.stride().y()
+                      + c[q].z()*lattice_.stride().z()
+                    ]
+                );
+            }
+            if (nMin < 1)
+            {
+                FatalError
+                    << "    The node is in or beside porous soil (porosity "
+                    << nMin << ")";
+                if (!displacement_)
+                {
+                    FatalError
+                        << ": where soil moves through the water, set"
+                        << " displacement on in"
+                        << " constant/porousFlowProperties (without it the"
+                        << " water does not make way for the soil, nor fill"
+                        << " the space it leaves: a block carried by a"
+                        << " stream ran ahead of it and stopped this way)";
+                }
+                FatalError << "." << nl;
+            }
+        }
         const bool besidePatch = besidePressurePatch(n);
         if (!collision_->splitRelaxation() && besidePatch)
         {

@@ -154,6 +154,7 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
         soil_ = &scene.effect<physicsEffects::soil>("soil");
         fluid_.enablePorosity();
         Info<< ": porosity 1 - phi of the soil, resistance of the drag";
+        checkPorous(soil_->mpm());
         const bool displacement =
             dict_.getOrDefault<Switch>("displacement", false);
         if (displacement)
@@ -199,6 +200,7 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
                     Info<< " " << mat.name() << figures;
                 }
                 Info<< " (a shorter time step raises K_f as 1/dt^2)";
+                checkPoreWaterStiffness(mpm);
             }
         }
         else
@@ -214,6 +216,115 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
             << " does not move): remove the keyword" << exit(FatalIOError);
     }
     Info<< nl << endl;
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalarList Foam::physicsEffects::porousFlow::minPorosities
+(
+    const materialPointSoil& mpm
+)
+{
+    const materialPoints& points = mpm.points();
+    scalarList nMin(mpm.materials().size(), GREAT);
+    forAll(points.porosity, p)
+    {
+        const label m = points.material[p];
+        nMin[m] = min(nMin[m], points.porosity[p]);
+    }
+    Pstream::listCombineGather(nMin, minEqOp<scalar>());
+    Pstream::listCombineScatter(nMin);
+    return nMin;
+}
+
+
+void Foam::physicsEffects::porousFlow::checkPorous
+(
+    const materialPointSoil& mpm
+) const
+{
+    // The Guo-Zhao lattice divides by the porosity (the pore pressure
+    // c_s^2 (rho - 1)/n, the equilibrium's u u/n) and the drag laws'
+    // permeability vanishes with it: a soil without pores cannot hold
+    // the water (it crashed on the first steps)
+    const PtrList<constitutiveModel>& materials = mpm.materials();
+    const scalarList nMin(minPorosities(mpm));
+    forAll(materials, m)
+    {
+        if (nMin[m] < GREAT && nMin[m] <= 0)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "medium soil: material " << materials[m].name()
+                << " has points of porosity " << nMin[m] << ": the water"
+                << " cannot be in a soil without pores (the porous lattice"
+                << " divides by the porosity)." << nl
+                << "    Allowed: porosity > 0 for every region of"
+                << " system/setMaterialPointsDict in a scene with porousFlow"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::physicsEffects::porousFlow::checkPoreWaterStiffness
+(
+    const materialPointSoil& mpm
+) const
+{
+    // With displacement the soil's compression raises its pore pressure
+    // by K_f/n per unit volumetric strain, K_f = rho_w c_s^2 the lattice's
+    // bulk modulus, and the soil feels that pressure once per water step
+    // (its sub-steps hold it): a spring integrated explicitly at the
+    // water's step. Its grid-scale mode turns by
+    // (omega dt)^2 ~ 4 K_f/(n rho_d) (dt/dx)^2 = 4 rho_w/(3 n rho_d) per
+    // step (rho_d the material's density, the solid mass per mixture
+    // volume), whatever dt and dx (K_f grows as (dx/dt)^2): it must stay
+    // below 4. Measured on a settling block (rho_s 2650 kg/m3):
+    // rho_w/(3 n rho_d) = 1.19 (n 0.12) and above grew from round-off
+    // and stopped within 0.11 s, 1.11 (n 0.13) ran
+    const PtrList<constitutiveModel>& materials = mpm.materials();
+    const scalarList nMin(minPorosities(mpm));
+    const scalar rhoW = fluid_.units().rho0();
+    const scalar limit = 1.1;
+    forAll(materials, m)
+    {
+        if (nMin[m] >= GREAT)
+        {
+            continue;
+        }
+        const scalar rhoD = materials[m].rho();
+        const scalar ratio = rhoW/(3*max(nMin[m], VSMALL)*rhoD);
+        if (ratio > limit)
+        {
+            char figures[200];
+            std::snprintf
+            (
+                figures, sizeof(figures),
+                " (density %.4g kg/m3, porosity down to %.3g) is too dense"
+                " a skeleton for the lattice's pore water: rho_w/(3 n rho)"
+                " = %.3g is above %.3g.",
+                rhoD, nMin[m], ratio, limit
+            );
+            char allowed[80];
+            std::snprintf
+            (
+                allowed, sizeof(allowed), "n >= rho_w/(%.3g rho) = %.3g",
+                3*limit, rhoW/(3*limit*rhoD)
+            );
+            FatalIOErrorInFunction(dict_)
+                << "displacement on: material " << materials[m].name()
+                << figures << nl
+                << "    Its compression raises its pore pressure by K_f/n"
+                << " (K_f = rho_w c_s^2, the lattice's bulk modulus), which"
+                << " the soil feels once per water step: above that ratio"
+                << " the pressure grows from step to step whatever deltaT"
+                << " and the mesh (K_f grows as (dx/dt)^2 as the soil's"
+                << " inertia does)." << nl
+                << "    Allowed: " << allowed << " for this material, or"
+                << " displacement off" << exit(FatalIOError);
+        }
+    }
 }
 
 
