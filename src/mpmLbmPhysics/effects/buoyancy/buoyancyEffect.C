@@ -43,6 +43,7 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     physicsEffect(scene),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(scene.effect<physicsEffects::soil>("soil").mpm()),
+    addedWaterForce_(nullptr),
     maxForce_(0),
     warm_(false),
     requested_("default"),
@@ -448,10 +449,6 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
     for (const label n : cellNode)
     {
         target_[n] += weight_[n] - 0.5*(weight_[n] + streamed_[n]);
-        for (const List<vector>* added : balancedWaterForces_)
-        {
-            target_[n] += (*added)[n];
-        }
     }
     // (with a free surface, only the liquid nodes: the surface's nodes
     // balance the lattice's own weight against the gas pressure rebuilt
@@ -496,14 +493,20 @@ void Foam::physicsEffects::buoyancy::evolve(const sceneStage)
             }
         }
     }
-    for (const label n : cellNode)
+    if (addedWaterForce_)
     {
-        vector F(X[n]);
-        for (const List<vector>* added : addedWaterForces_)
+        const List<vector>& added = *addedWaterForce_;
+        for (const label n : cellNode)
         {
-            F += (*added)[n];
+            fluid_.setForce(n, X[n] + added[n]);
         }
-        fluid_.setForce(n, F);
+    }
+    else
+    {
+        for (const label n : cellNode)
+        {
+            fluid_.setForce(n, X[n]);
+        }
     }
 
     soil_.addNodeForces(soilForce_);

@@ -16,7 +16,6 @@ License
 #include "fluidEffect.H"
 #include "soilEffect.H"
 #include "materialPointSoil.H"
-#include "buoyancyEffect.H"
 #include "dragRelaxation.H"
 #include "selectEntry.H"
 #include "addToRunTimeSelectionTable.H"
@@ -63,7 +62,6 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
     medium_(selectEntry(mediumTypeNames, "medium", dict_)),
     fluid_(scene.effect<physicsEffects::fluid>("fluid").lbm()),
     soil_(nullptr),
-    correctionAdded_(false),
     porosity_(1),
     permeability_(GREAT),
     forchheimer_(0),
@@ -424,119 +422,6 @@ void Foam::physicsEffects::porousFlow::mapPorosity()
 }
 
 
-void Foam::physicsEffects::porousFlow::setViscousCorrection()
-{
-    // The lattice's viscous stress is that of its superficial velocity
-    // u = n u_w: rho nu (grad(u) + grad(u)^T). Water moving with the soil
-    // (u_w = v_s) has u = n v_s, which jumps at the soil's faces by
-    // (1 - n) v_s: the lattice takes that jump for a shear of the water
-    // and the stress it makes acts on both through the pore pressure (a
-    // block carried by a stream at 0.5 m/s lagged it by 5.8% at tau 0.53,
-    // a block settling at Darcy's speed took about 5.5% more resistance,
-    // growing with nu/dx). Seen from the soil (the frame where Brinkman's
-    // stress lives) the water's superficial velocity is continuous there:
-    // the part of grad(u) that the porosity's jump makes of the soil's
-    // velocity, v_s grad(n), is not a shear of the water. Its stress
-    //     S = rho nu (v_s (x) grad(n) + grad(n) (x) v_s)
-    // is taken out: the water gets -div(S) (central differences; a wall
-    // neighbour takes the node's own values). It is zero in clear water
-    // and inside uniform soil, and sums to nothing over the water (its
-    // momentum is kept). v_s at a node without soil beside the soil's
-    // face is the soil-weighted mean of its neighbours'. The Smagorinsky
-    // model's eddy viscosity is not in nu here.
-    const latticeMesh& lattice = fluid_.lattice();
-    const List<unsigned char>& kind = lattice.kind();
-    const labelVector& stride = lattice.stride();
-    const label nDim = lattice.nDim();
-    const label nBox = lattice.nBox();
-    const scalarList& phi = soil_->solidFraction();
-    const List<vector>& soilVelocity = soil_->nodeVelocity();
-    const lbmUnits& units = fluid_.units();
-    const scalar nu = units.nuLattice();
-
-    if (!correctionAdded_)
-    {
-        viscousCorrection_.setSize(nBox, Zero);
-        jumpStress_.setSize(6*nBox, Zero);
-        scene_.effect<physicsEffects::buoyancy>("buoyancy")
-            .addWaterForce(viscousCorrection_, true);
-        correctionAdded_ = true;
-    }
-
-    // (symmTensor components xx xy xz yy yz zz, each nBox long)
-    jumpStress_ = 0;
-    auto neighbour = [&](const label n, const label a, const label side)
-    {
-        const label m = n + side*stride[a];
-        return kind[m] == latticeMesh::WALL ? n : m;
-    };
-    for (const label n : lattice.cellNode())
-    {
-        vector gradN(Zero);
-        for (direction a = 0; a < nDim; ++a)
-        {
-            // (n = 1 - phi)
-            gradN[a] =
-                0.5*(phi[neighbour(n, a, -1)] - phi[neighbour(n, a, 1)]);
-        }
-        if (magSqr(gradN) == 0)
-        {
-            continue;
-        }
-        vector v(soilVelocity[n]);
-        if (!(phi[n] > 0))
-        {
-            scalar weight = 0;
-            v = Zero;
-            for (direction a = 0; a < nDim; ++a)
-            {
-                for (const label side : {-1, 1})
-                {
-                    const label m = neighbour(n, a, side);
-                    v += phi[m]*soilVelocity[m];
-                    weight += phi[m];
-                }
-            }
-            v = weight > 0 ? v/weight : vector::zero;
-        }
-        const symmTensor S(nu*twoSymm(units.toLattice(v)*gradN));
-        jumpStress_[n] = S.xx();
-        jumpStress_[nBox + n] = S.xy();
-        jumpStress_[2*nBox + n] = S.xz();
-        jumpStress_[3*nBox + n] = S.yy();
-        jumpStress_[4*nBox + n] = S.yz();
-        jumpStress_[5*nBox + n] = S.zz();
-    }
-    lattice.halo().exchange(jumpStress_.data(), 6, nBox);
-
-    auto S = [&](const label n)
-    {
-        return symmTensor
-        (
-            jumpStress_[n], jumpStress_[nBox + n], jumpStress_[2*nBox + n],
-            jumpStress_[3*nBox + n], jumpStress_[4*nBox + n],
-            jumpStress_[5*nBox + n]
-        );
-    };
-    for (const label n : lattice.cellNode())
-    {
-        vector divS(Zero);
-        for (direction b = 0; b < nDim; ++b)
-        {
-            const symmTensor dS
-            (
-                0.5*(S(neighbour(n, b, 1)) - S(neighbour(n, b, -1)))
-            );
-            // (div(S)_a = sum_b d_b S_ab)
-            divS.x() += (b == 0 ? dS.xx() : b == 1 ? dS.xy() : dS.xz());
-            divS.y() += (b == 0 ? dS.xy() : b == 1 ? dS.yy() : dS.yz());
-            divS.z() += (b == 0 ? dS.xz() : b == 1 ? dS.yz() : dS.zz());
-        }
-        viscousCorrection_[n] = -divS;
-    }
-}
-
-
 Foam::sceneStageList Foam::physicsEffects::porousFlow::stages() const
 {
     if (medium_ == mediumType::soil || forchheimer_ > 0)
@@ -552,7 +437,6 @@ void Foam::physicsEffects::porousFlow::evolve(const sceneStage)
     if (medium_ == mediumType::soil)
     {
         mapPorosity();
-        setViscousCorrection();
     }
     else
     {
