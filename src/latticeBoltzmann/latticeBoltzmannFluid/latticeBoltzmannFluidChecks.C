@@ -199,9 +199,7 @@ void Foam::latticeBoltzmannFluid::instability(const scalarList& f) const
                     nMin,
                     porosity_
                     [
-                        n + c[q].x()*lattice_.stride().x()
-                      + c[q].y()*lattice_.stride().y()
-                      + c[q].z()*lattice_.stride().z()
+                        n + lattice_.offset(c[q].x(), c[q].y(), c[q].z())
                     ]
                 );
             }

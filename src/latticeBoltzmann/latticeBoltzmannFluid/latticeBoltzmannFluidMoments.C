@@ -36,14 +36,9 @@ Foam::scalar Foam::latticeBoltzmannFluid::nodePressure(const label n) const
     {
         rho += f[layout_.at(q, n)];
     }
-    if (displacementSource_.size())
-    {
-        // (the coming step's time-centred density, as the buoyancy reads
-        // it: see pressureDensity in updateFields)
-        rho += 0.5*displacementSource_[n];
-    }
     const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
-    return units_.pressure(rho)/eps + hydrostaticPressure(n);
+    return
+        units_.pressure(pressureDensity(n, rho))/eps + hydrostaticPressure(n);
 }
 
 
@@ -304,18 +299,10 @@ void Foam::latticeBoltzmannFluid::updateFields()
         const vector F = nodeForce(n);
         const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
         U[celli] = units_.toPhysical((j - 0.5*F)/rho);
-        // With the porous flow's displacement the pressure is the coming
-        // step's time-centred one, which the buoyancy reads: the sum plus
-        // half the source the coming step adds, taken as the last one's.
-        // Between steps a node that soil moves into holds the water its
-        // last source compressed less what has flowed out, the bottom of
-        // its saw-tooth: read bare, a face moving at V showed a pressure
-        // dip of order rho_w (dx/dt) V dphi/n
-        const scalar pressureDensity =
-            displacementSource_.size()
-          ? rho + 0.5*displacementSource_[n] : rho;
+        // (with displacement the coming step's time-centred pressure)
         p[celli] =
-            units_.pressure(pressureDensity)/eps + hydrostaticPressure(n);
+            units_.pressure(pressureDensity(n, rho))/eps
+          + hydrostaticPressure(n);
         rhoPhys[celli] = (rho - (1 - eps))*units_.rho0();
     }
 

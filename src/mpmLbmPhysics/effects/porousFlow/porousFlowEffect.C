@@ -154,7 +154,8 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
         soil_ = &scene.effect<physicsEffects::soil>("soil");
         fluid_.enablePorosity();
         Info<< ": porosity 1 - phi of the soil, resistance of the drag";
-        checkPorous(soil_->mpm());
+        const scalarList nMin(minPorosities(soil_->mpm()));
+        checkPorous(soil_->mpm(), nMin);
         const bool displacement =
             dict_.getOrDefault<Switch>("displacement", false);
         if (displacement)
@@ -200,7 +201,7 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
                     Info<< " " << mat.name() << figures;
                 }
                 Info<< " (a shorter time step raises K_f as 1/dt^2)";
-                checkPoreWaterStiffness(mpm);
+                checkPoreWaterStiffness(mpm, nMin);
             }
         }
         else
@@ -241,7 +242,8 @@ Foam::scalarList Foam::physicsEffects::porousFlow::minPorosities
 
 void Foam::physicsEffects::porousFlow::checkPorous
 (
-    const materialPointSoil& mpm
+    const materialPointSoil& mpm,
+    const scalarList& nMin
 ) const
 {
     // The Guo-Zhao lattice divides by the porosity (the pore pressure
@@ -249,7 +251,6 @@ void Foam::physicsEffects::porousFlow::checkPorous
     // permeability vanishes with it: a soil without pores cannot hold
     // the water (it crashed on the first steps)
     const PtrList<constitutiveModel>& materials = mpm.materials();
-    const scalarList nMin(minPorosities(mpm));
     forAll(materials, m)
     {
         if (nMin[m] < GREAT && nMin[m] <= 0)
@@ -269,7 +270,8 @@ void Foam::physicsEffects::porousFlow::checkPorous
 
 void Foam::physicsEffects::porousFlow::checkPoreWaterStiffness
 (
-    const materialPointSoil& mpm
+    const materialPointSoil& mpm,
+    const scalarList& nMin
 ) const
 {
     // With displacement the soil's compression raises its pore pressure
@@ -286,7 +288,6 @@ void Foam::physicsEffects::porousFlow::checkPoreWaterStiffness
     // from round-off and stopped within 0.11 s; 1.05 (0.13) ran, and a
     // block of grains as dense as water carried by a stream (0.83) ran
     const PtrList<constitutiveModel>& materials = mpm.materials();
-    const scalarList nMin(minPorosities(mpm));
     const scalar rhoW = fluid_.units().rho0();
     const scalar limit = 1.1;
     forAll(materials, m)
