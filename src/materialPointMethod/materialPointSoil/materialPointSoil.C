@@ -291,11 +291,7 @@ Foam::vector Foam::materialPointSoil::rampedGravity() const
 
 void Foam::materialPointSoil::removePoints(const labelUList& gone)
 {
-    points_.remove
-    (
-        gone,
-        hasPointForces_ && pointForce_.size() ? &pointForce_ : nullptr
-    );
+    points_.remove(gone, travellingForces(), travellingStresses());
 }
 
 
@@ -315,7 +311,8 @@ void Foam::materialPointSoil::migrate()
     (
         leavingPoint_,
         leavingProc_,
-        hasPointForces_ ? &pointForce_ : nullptr
+        hasPointForces_ ? &pointForce_ : nullptr,
+        hasPointStresses_ ? &pointStress_ : nullptr
     );
     leavingPoint_.clear();
     leavingProc_.clear();
@@ -370,6 +367,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
         lattice.periodic()[0] || lattice.periodic()[1] || lattice.periodic()[2]
     ),
     hasPointForces_(false),
+    hasPointStresses_(false),
     gridExchange_(nullptr),
     nClamped_(0),
     firstClamped_(-1),
@@ -806,6 +804,24 @@ void Foam::materialPointSoil::preparePointForces()
         pointForce_ = Zero;
     }
     hasPointForces_ = true;
+    if (hasPointStresses_ && pointStress_.size() != points_.size())
+    {
+        pointStress_.setSize(points_.size());
+        pointStress_ = Zero;
+    }
+}
+
+
+Foam::List<Foam::vector>* Foam::materialPointSoil::travellingForces()
+{
+    return hasPointForces_ && pointForce_.size() ? &pointForce_ : nullptr;
+}
+
+
+Foam::List<Foam::symmTensor>* Foam::materialPointSoil::travellingStresses()
+{
+    return
+        hasPointStresses_ && pointStress_.size() ? &pointStress_ : nullptr;
 }
 
 
@@ -854,16 +870,19 @@ void Foam::materialPointSoil::addNodeForces(const List<vector>& nodeForce)
 }
 
 
-void Foam::materialPointSoil::addPointForces
+void Foam::materialPointSoil::addPointTractions
 (
     const UList<label>& pointIndices,
-    const vector& f
+    const vector& f,
+    const symmTensor& s
 )
 {
+    hasPointStresses_ = true;
     preparePointForces();
     for (const label p : pointIndices)
     {
         pointForce_[p] += f;
+        pointStress_[p] += s;
     }
 }
 
@@ -871,6 +890,7 @@ void Foam::materialPointSoil::addPointForces
 void Foam::materialPointSoil::clearPointForces()
 {
     pointForce_ = Zero;
+    pointStress_ = Zero;
 }
 
 

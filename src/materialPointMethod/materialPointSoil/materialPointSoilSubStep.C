@@ -115,7 +115,8 @@ void Foam::materialPointSoil::sortPoints()
     points_.reorder
     (
         order,
-        hasPointForces_ && pointForce_.size() ? &pointForce_ : nullptr
+        travellingForces(),
+        travellingStresses()
     );
 }
 

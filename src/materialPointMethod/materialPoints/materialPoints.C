@@ -169,7 +169,8 @@ Foam::label Foam::materialPoints::memoryPerPoint()
 Foam::label Foam::materialPoints::compact
 (
     const labelUList& gone,
-    List<vector>* extra
+    List<vector>* extra,
+    List<symmTensor>* extraStress
 )
 {
     // Close the gaps from the first gone point on
@@ -196,6 +197,10 @@ Foam::label Foam::materialPoints::compact
         {
             (*extra)[k] = (*extra)[p];
         }
+        if (extraStress)
+        {
+            (*extraStress)[k] = (*extraStress)[p];
+        }
         ++k;
     }
     return k;
@@ -205,18 +210,23 @@ Foam::label Foam::materialPoints::compact
 void Foam::materialPoints::remove
 (
     const labelUList& gone,
-    List<vector>* extra
+    List<vector>* extra,
+    List<symmTensor>* extraStress
 )
 {
     if (gone.empty())
     {
         return;
     }
-    const label k = compact(gone, extra);
+    const label k = compact(gone, extra, extraStress);
     setSize(k);
     if (extra)
     {
         extra->setSize(k);
+    }
+    if (extraStress)
+    {
+        extraStress->setSize(k);
     }
 }
 
@@ -224,7 +234,8 @@ void Foam::materialPoints::remove
 void Foam::materialPoints::reorder
 (
     const labelUList& order,
-    List<vector>* extra
+    List<vector>* extra,
+    List<symmTensor>* extraStress
 )
 {
     auto permute = [&](auto& values)
@@ -254,6 +265,17 @@ void Foam::materialPoints::reorder
         }
         permute(*extra);
     }
+    if (extraStress)
+    {
+        if (extraStress->size() != order.size())
+        {
+            FatalErrorInFunction
+                << "A per-point list of " << extraStress->size()
+                << " stresses for " << order.size() << " points"
+                << abort(FatalError);
+        }
+        permute(*extraStress);
+    }
 }
 
 
@@ -261,7 +283,8 @@ void Foam::materialPoints::migrate
 (
     const labelUList& leaving,
     const labelUList& toProc,
-    List<vector>* extra
+    List<vector>* extra,
+    List<symmTensor>* extraStress
 )
 {
     const label nProcs = Pstream::nProcs();
@@ -301,6 +324,10 @@ void Foam::materialPoints::migrate
         {
             put(*extra);
         }
+        if (extraStress)
+        {
+            put(*extraStress);
+        }
     }
     labelList recvSizes;
     pBufs.finishedSends(recvSizes);
@@ -325,13 +352,17 @@ void Foam::materialPoints::migrate
     }
 
     // Keep the others, in their order
-    label k = compact(leaving, extra);
+    label k = compact(leaving, extra, extraStress);
     if (k + nArriving != n)
     {
         setSize(k + nArriving);
         if (extra)
         {
             extra->setSize(k + nArriving);
+        }
+        if (extraStress)
+        {
+            extraStress->setSize(k + nArriving);
         }
     }
 
@@ -364,6 +395,10 @@ void Foam::materialPoints::migrate
         if (extra)
         {
             get(*extra);
+        }
+        if (extraStress)
+        {
+            get(*extraStress);
         }
     }
 }

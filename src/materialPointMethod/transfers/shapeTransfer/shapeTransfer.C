@@ -76,6 +76,10 @@ void Foam::shapeTransfer<Shape>::p2gPoints
     const label sz = soil.lattice_.stride().z();
     const vector* fExt =
         soil.pointForce_.size() ? soil.pointForce_.cdata() : nullptr;
+    // (a surface traction's moment, added to the stress of the points it
+    // loads: see materialPointSoil::addPointTractions)
+    const symmTensor* sExt =
+        soil.pointStress_.size() ? soil.pointStress_.cdata() : nullptr;
     const label nBox = soil.gridMass_.size();
 
     // (sized once for 8 values per node, whatever W: MUSL maps with and
@@ -137,7 +141,8 @@ void Foam::shapeTransfer<Shape>::p2gPoints
             const vector mg(fExt ? mp*g + fExt[p] : mp*g);
             const symmTensor Bs
             (
-                -(soil.points_.V[p]*invDx)*soil.points_.sigma[p]
+                -(soil.points_.V[p]*invDx)
+               *(sExt ? soil.points_.sigma[p] + sExt[p] : soil.points_.sigma[p])
             );
             By = vector(Bs.xy(), Bs.yy(), Bs.yz());
             Bz = vector(Bs.xz(), Bs.yz(), Bs.zz());
@@ -261,6 +266,10 @@ void Foam::shapeTransfer<Shape>::p2gForcePoints
     const label sz = soil.lattice_.stride().z();
     const vector* fExt =
         soil.pointForce_.size() ? soil.pointForce_.cdata() : nullptr;
+    // (a surface traction's moment, added to the stress of the points it
+    // loads: see materialPointSoil::addPointTractions)
+    const symmTensor* sExt =
+        soil.pointStress_.size() ? soil.pointStress_.cdata() : nullptr;
     vector* __restrict__ force = soil.gridForce_.data();
 
     const label nPoints = soil.points_.size();
@@ -275,7 +284,8 @@ void Foam::shapeTransfer<Shape>::p2gForcePoints
         const vector mg(fExt ? mp*g + fExt[p] : mp*g);
         const symmTensor B
         (
-            -(soil.points_.V[p]*invDx)*soil.points_.sigma[p]
+            -(soil.points_.V[p]*invDx)
+           *(sExt ? soil.points_.sigma[p] + sExt[p] : soil.points_.sigma[p])
         );
         const vector Bx(B.xx(), B.xy(), B.xz());
         const vector By(B.xy(), B.yy(), B.yz());
