@@ -561,6 +561,7 @@ void Foam::latticeBoltzmannFluid::prepareStream()
     scalarList& f = current();
     if (nSteps_ == 0 && !restarted_)
     {
+        warnUniformPressure();
         startAtForceBalance();
     }
     if (nSteps_ == 0 && restarted_)
@@ -847,6 +848,57 @@ void Foam::latticeBoltzmannFluid::startAtForceBalance()
             f[layout_.at(q, n)] += 1.5*w[q]*(vector(c[q]) & F);
         }
     }
+}
+
+
+void Foam::latticeBoltzmannFluid::warnUniformPressure() const
+{
+    // The weight a hydrostatic pressure can balance (along a periodic
+    // direction the weight drives the flow)
+    const vector g(hydrostaticAcceleration());
+    if (mag(g) == 0)
+    {
+        return;
+    }
+    const vector up(-g/mag(g));
+    const vectorField& C = mesh_.C();
+    const labelList& nodeCell = lattice_.nodeCell();
+    scalar pMin = GREAT, pMax = -GREAT, hMin = GREAT, hMax = -GREAT;
+    for (const label n : lattice_.cellNode())
+    {
+        if (obstacles_->solid(n) || (freeSurface_ && freeSurface_->gas(n)))
+        {
+            continue;
+        }
+        const label celli = nodeCell[n];
+        pMin = min(pMin, p_[celli]);
+        pMax = max(pMax, p_[celli]);
+        hMin = min(hMin, up & C[celli]);
+        hMax = max(hMax, up & C[celli]);
+    }
+    reduce(pMin, minOp<scalar>());
+    reduce(pMax, maxOp<scalar>());
+    reduce(hMin, minOp<scalar>());
+    reduce(hMax, maxOp<scalar>());
+    // (water at least two cells deep: its weight over its depth)
+    const scalar depth = hMax - hMin + lattice_.dx();
+    const scalar weight = units_.rho0()*mag(g)*depth;
+    if (depth < 2.5*lattice_.dx() || pMax - pMin > 1e-6*weight)
+    {
+        return;
+    }
+    WarningInFunction
+        << "The water's initial pressure ("
+        << p_.time().timeName(p_.time().startTime().value())
+        << "/p) is uniform, " << pMax << " Pa, but"
+        << " the water has weight: g = " << g << " m/s2 over its depth of "
+        << depth << " m, rho g H = " << weight << " Pa. It starts out of"
+        << " hydrostatic balance by that much: it falls under its weight"
+        << " and a pressure wave of that size runs through it (a closed"
+        << " tank rings; an open one drains through its patches)." << nl
+        << "    Set p to the hydrostatic pressure, e.g. with setExprFields"
+        << " (p = rho g (h - y) below the level h, as the tutorials do), or"
+        << " ignore this if the start is meant" << nl << endl;
 }
 
 
