@@ -319,8 +319,10 @@ Foam::PtrList<Foam::materialPointRegion> Foam::materialPointRegion::readList
         );
         if (!failure.empty())
         {
+            // (most messages name their region already)
+            const string prefix("Region " + regionEntries[r].keyword() + ": ");
             FatalIOErrorInFunction(rd)
-                << "Region " << regionEntries[r].keyword() << ": "
+                << (failure.find(prefix) == 0 ? string() : prefix)
                 << failure.c_str() << exit(FatalIOError);
         }
     }

@@ -593,6 +593,17 @@ int main(int argc, char *argv[])
             // The cloud and, after it, the counts and totals a run starting
             // here must find in it (a processor's cloud lost by decomposePar or
             // by hand) and its files' checksums (an edit is reported)
+            // (the whole cloud is made here: a cloud written before goes
+            // first, so that none of its fields outlives it, e.g. the fines
+            // of a region that no longer has any)
+            const fileName cloudDir
+            (
+                runTime.timePath()/"lagrangian"/materialPoints::cloudName
+            );
+            if (isDir(cloudDir))
+            {
+                rmDir(cloudDir);
+            }
             restartManifest::beginWrite(runTime, false);
             points.write(mesh, lattice);
             restartManifest::stateTable state;

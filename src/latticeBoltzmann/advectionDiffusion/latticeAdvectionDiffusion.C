@@ -175,6 +175,18 @@ void Foam::latticeAdvectionDiffusion::setRelaxation(const dictionary& dict)
     const scalar dx = units_.dx();
     const scalar dt = units_.dt();
     tau_ = 0.5 + D_*dt/(cs2_*dx*dx);
+    if (tau_ > 10)
+    {
+        // (stable for any tau > 1/2, but each step then spreads the scalar
+        // over several cells: its transients are not resolved in time)
+        IOWarningInFunction(dict)
+            << "D " << D_ << " m2/s gives the lattice advection-diffusion of "
+            << C_.name() << " tau " << tau_ << ": each step spreads it over "
+            << Foam::sqrt(2*D_*dt)/dx << " cells (sqrt(2 D dt)/dx), its"
+            << " changes in time are not resolved (keep tau below about 2,"
+            << " D dt/dx^2 below 1/2: a smaller deltaT or larger cells)"
+            << nl << endl;
+    }
 }
 
 
@@ -192,9 +204,43 @@ void Foam::latticeAdvectionDiffusion::buildLinks
     forAll(patches, patchi)
     {
         const polyPatch& pp = patches[patchi];
-        const word type = C_.boundaryField()[patchi].type();
-        if (pp.coupled() || isA<emptyPolyPatch>(pp) || allowed.found(type))
+        const fvPatchScalarField& Cp = C_.boundaryField()[patchi];
+        const word type = Cp.type();
+        if (pp.coupled() || isA<emptyPolyPatch>(pp))
         {
+            continue;
+        }
+        if (allowed.found(type))
+        {
+            // The values the patch puts into the water: as the field's own,
+            // finite and non-negative (a negative inflow would make the
+            // suspension negative downstream)
+            const scalarField given
+            (
+                type == "inletOutlet"
+              ? refCast<const inletOutletFvPatchScalarField>(Cp).refValue()
+              : scalarField(Cp)
+            );
+            forAll(given, i)
+            {
+                if
+                (
+                    type != "zeroGradient"
+                 && !(given[i] >= 0 && given[i] < GREAT)
+                )
+                {
+                    IFstream is(C_.objectPath());
+                    const dictionary fieldDict(is);
+                    FatalIOErrorInFunction
+                    (
+                        fieldDict.subDict("boundaryField").subDict(pp.name())
+                    )   << "Patch " << pp.name() << " (" << type << "): "
+                        << (type == "inletOutlet" ? "inletValue " : "value ")
+                        << given[i] << " at its face " << i << "; the "
+                        << C_.name() << " it brings in must be finite and"
+                        << " non-negative" << exit(FatalIOError);
+                }
+            }
             continue;
         }
         IFstream is(C_.objectPath());

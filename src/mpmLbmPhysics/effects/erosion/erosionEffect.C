@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "erosionEffect.H"
+#include "inletOutletFvPatchFields.H"
 #include "freeSurfaceEffect.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
@@ -273,6 +274,17 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
                 << " not allowed: the nodal solid fraction that marks the"
                 << " soil's surface, in (0, 1)" << exit(FatalIOError);
         }
+        if (surfaceSolidFraction_ >= densest_)
+        {
+            // (no node of the soil reaches it: no surface, nothing erodes)
+            FatalIOErrorInFunction(dict_)
+                << "surfaceSolidFraction " << surfaceSolidFraction_ << " is"
+                << " not allowed: the nodal solid fraction that marks the"
+                << " soil's surface must lie below that of the densest"
+                << " soil, " << densest_ << " (1 - its porosity): no node"
+                << " would reach it and nothing would erode. The default is"
+                << " half of it, " << 0.5*densest_ << exit(FatalIOError);
+        }
         minVolumeFraction_ =
             dict_.getOrDefault<scalar>("minVolumeFraction", 1e-3);
         if (!(minVolumeFraction_ >= 0 && minVolumeFraction_ < 1))
@@ -303,6 +315,49 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
                 << " are a mass per volume of water " << dimDensity
                 << ", not " << susp.field().dimensions()
                 << exit(FatalIOError);
+        }
+        // No more grains in a volume of water than grains fill it (the
+        // field; the limit the erosion keeps may be overshot, so a run
+        // written past it restarts) and no inflow above that limit
+        const volScalarField& C = susp.field();
+        const scalar rhoS = law_->rhoSolid();
+        forAll(C, celli)
+        {
+            if (C[celli] > rhoS)
+            {
+                FatalIOErrorInFunction(dict_)
+                    << C.objectPath() << ": " << C.name() << " " << C[celli]
+                    << " kg/m3 in cell " << celli << " is more grains than"
+                    << " a volume of them holds: the suspended fines must"
+                    << " lie in [0, rhoSolid " << rhoS << "] kg/m3"
+                    << " (maxConcentration " << maxConcentration_ << ")"
+                    << exit(FatalIOError);
+            }
+        }
+        forAll(C.boundaryField(), patchi)
+        {
+            const fvPatchScalarField& Cp = C.boundaryField()[patchi];
+            if (Cp.type() != "fixedValue" && Cp.type() != "inletOutlet")
+            {
+                continue;
+            }
+            const scalarField given
+            (
+                Cp.type() == "inletOutlet"
+              ? refCast<const inletOutletFvPatchScalarField>(Cp).refValue()
+              : scalarField(Cp)
+            );
+            if (given.size() && max(given) > maxConcentration_)
+            {
+                FatalIOErrorInFunction(dict_)
+                    << C.objectPath() << ": patch " << Cp.patch().name()
+                    << " (" << Cp.type() << ") brings in " << max(given)
+                    << " kg/m3 of " << C.name() << ", above the most fines"
+                    << " the pore water carries, maxConcentration "
+                    << maxConcentration_ << " kg/m3 (rhoSolid " << rhoS
+                    << "): give a concentration in [0, " << maxConcentration_
+                    << "]" << exit(FatalIOError);
+            }
         }
     }
     // Filtration fills clean pores: points without fines start at none
