@@ -82,10 +82,11 @@ void Foam::materialPointRegion::readGeostatic
     if (mag(gravity) < SMALL)
     {
         FatalIOErrorInFunction(dict)
-            << "Region " << name_ << ": geostatic stress needs gravity"
-            << " (constant/g, with gravity in the effects of"
-            << " constant/physicsProperties)"
-            << " in constant/soilProperties" << exit(FatalIOError);
+            << "Region " << name_ << ": geostatic stress needs the soil's"
+            << " gravity: constant/g, and the gravity effect acting on the"
+            << " soil in constant/physicsProperties (without it the stress"
+            << " is released at the first step and the soil swells)"
+            << exit(FatalIOError);
     }
 }
 
@@ -322,7 +323,7 @@ Foam::PtrList<Foam::materialPointRegion> Foam::materialPointRegion::readList
             // (most messages name their region already)
             const string prefix("Region " + regionEntries[r].keyword() + ": ");
             FatalIOErrorInFunction(rd)
-                << (failure.find(prefix) == 0 ? string() : prefix)
+                << (failure.find(prefix) == 0 ? "" : prefix.c_str())
                 << failure.c_str() << exit(FatalIOError);
         }
     }

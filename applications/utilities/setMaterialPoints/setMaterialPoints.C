@@ -136,6 +136,37 @@ static vector readGravity
         IFstream is(g.filePath());
         checkInPlane(twoD, gravity, "value", dictionary(is));
     }
+
+    // The soil feels constant/g only with the gravity effect acting on it
+    // (a geostatic stress without it is released at the first step: the
+    // soil swells)
+    IOobject pio
+    (
+        "physicsProperties",
+        mesh.time().constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
+    );
+    if (mag(gravity) > 0 && pio.typeHeaderOk<IOdictionary>(true))
+    {
+        const IOdictionary pd(pio);
+        const wordList effects(pd.getOrDefault<wordList>("effects", {}));
+        bool onSoil = effects.found("gravity");
+        if (onSoil && pd.isDict("gravityCoeffs"))
+        {
+            const dictionary& gc = pd.subDict("gravityCoeffs");
+            onSoil =
+                !gc.found("phases")
+             || gc.get<wordList>("phases").found("soil");
+        }
+        if (!onSoil)
+        {
+            Info<< "constant/g is not the soil's: constant/physicsProperties"
+                << " has no gravity effect acting on the soil" << nl << endl;
+            gravity = Zero;
+        }
+    }
     return gravity;
 }
 

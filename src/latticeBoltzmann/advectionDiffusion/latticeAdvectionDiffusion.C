@@ -182,10 +182,10 @@ void Foam::latticeAdvectionDiffusion::setRelaxation(const dictionary& dict)
         IOWarningInFunction(dict)
             << "D " << D_ << " m2/s gives the lattice advection-diffusion of "
             << C_.name() << " tau " << tau_ << ": each step spreads it over "
-            << Foam::sqrt(2*D_*dt)/dx << " cells (sqrt(2 D dt)/dx), its"
-            << " changes in time are not resolved (keep tau below about 2,"
-            << " D dt/dx^2 below 1/2: a smaller deltaT or larger cells)"
-            << nl << endl;
+            << Foam::sqrt(2*D_*dt)/dx << " cells (sqrt(2 D dt)/dx): its"
+            << " changes in time are not resolved. A tau of order 1"
+            << " resolves them (D dt/dx^2 = c_s^2 (tau - 1/2)): a smaller"
+            << " deltaT or larger cells" << nl << endl;
     }
 }
 
@@ -210,6 +210,10 @@ void Foam::latticeAdvectionDiffusion::buildLinks
         {
             continue;
         }
+        if (type == "zeroGradient")
+        {
+            continue;
+        }
         if (allowed.found(type))
         {
             // The values the patch puts into the water: as the field's own,
@@ -223,11 +227,7 @@ void Foam::latticeAdvectionDiffusion::buildLinks
             );
             forAll(given, i)
             {
-                if
-                (
-                    type != "zeroGradient"
-                 && !(given[i] >= 0 && given[i] < GREAT)
-                )
+                if (!(given[i] >= 0 && given[i] < GREAT))
                 {
                     IFstream is(C_.objectPath());
                     const dictionary fieldDict(is);
@@ -236,7 +236,8 @@ void Foam::latticeAdvectionDiffusion::buildLinks
                         fieldDict.subDict("boundaryField").subDict(pp.name())
                     )   << "Patch " << pp.name() << " (" << type << "): "
                         << (type == "inletOutlet" ? "inletValue " : "value ")
-                        << given[i] << " at its face " << i << "; the "
+                        << given[i] << " (at its face " << i << " on this"
+                        << " processor); the "
                         << C_.name() << " it brings in must be finite and"
                         << " non-negative" << exit(FatalIOError);
                 }

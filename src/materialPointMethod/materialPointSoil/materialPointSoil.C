@@ -622,6 +622,17 @@ Foam::scalar Foam::materialPointSoil::readCFL() const
 
 void Foam::materialPointSoil::advance(const scalar deltaT)
 {
+    if (nTotalSubSteps_ == 0 && gravityRamp_ > 0 && mag(gravity_) == 0)
+    {
+        // (the effects are all set at the first step: the gravity effect
+        // gives the soil its gravity)
+        FatalIOErrorInFunction(dict_)
+            << "gravityRamp " << gravityRamp_ << " s: the soil feels no"
+            << " gravity to ramp (constant/physicsProperties has no gravity"
+            << " effect acting on the soil)." << nl
+            << "    Add gravity to effects in constant/physicsProperties, or"
+            << " remove gravityRamp" << exit(FatalIOError);
+    }
     CFL_ = readCFL();
     const scalar dtStable = stableDt();
     if (!(deltaT/dtStable <= 1e7))

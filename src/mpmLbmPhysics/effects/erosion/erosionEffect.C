@@ -317,15 +317,24 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
                 << exit(FatalIOError);
         }
         // No more grains in a volume of water than grains fill it (the
-        // field; the limit the erosion keeps may be overshot, so a run
-        // written past it restarts) and no inflow above that limit
+        // field a run starts from; the limit the erosion keeps may be
+        // overshot: a time it wrote is not checked) and no inflow above
+        // that limit
         const volScalarField& C = susp.field();
         const scalar rhoS = law_->rhoSolid();
+        const Time& runTime = scene.mesh().time();
+        const bool written = returnReduce
+        (
+            isFile(runTime.timePath()/"uniform"/"erosionState"),
+            orOp<bool>()
+        );
+        IFstream fieldStream(C.objectPath());
+        const dictionary fieldDict(fieldStream);
         forAll(C, celli)
         {
-            if (C[celli] > rhoS)
+            if (!written && C[celli] > rhoS)
             {
-                FatalIOErrorInFunction(dict_)
+                FatalIOErrorInFunction(fieldDict)
                     << C.objectPath() << ": " << C.name() << " " << C[celli]
                     << " kg/m3 in cell " << celli << " is more grains than"
                     << " a volume of them holds: the suspended fines must"
@@ -349,7 +358,11 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
             );
             if (given.size() && max(given) > maxConcentration_)
             {
-                FatalIOErrorInFunction(dict_)
+                FatalIOErrorInFunction
+                (
+                    fieldDict.subDict("boundaryField")
+                        .subDict(Cp.patch().name())
+                )
                     << C.objectPath() << ": patch " << Cp.patch().name()
                     << " (" << Cp.type() << ") brings in " << max(given)
                     << " kg/m3 of " << C.name() << ", above the most fines"

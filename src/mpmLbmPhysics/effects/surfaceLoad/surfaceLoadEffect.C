@@ -310,15 +310,17 @@ void Foam::physicsEffects::surfaceLoad::apply()
             // direction, not at the centres: its moment about them, the
             // traction's virtual work to first order (f N(x_p + d) =
             // f N(x_p) + (f (x) d).grad N), enters the internal force as
-            // the stress -(f (x) d)/V = (p/2) n n added to the point's
-            // own. Without it the loaded row carried about half the
-            // pressure, the row below the rest, and a biaxial sample
-            // failed 10% early
+            // the stress -(f (x) d)/V = (f/2)/(A/N_0) n n added to the
+            // point's own (V = l A/N_0, each of the N_0 points loaded at the
+            // start covering A/N_0; p/2 while none has eroded away).
+            // Without it the loaded row carried about half the pressure,
+            // the row below the rest, and a biaxial sample failed 10% early
+            const scalar f = P*r.area/r.nFound;
             soil_.addPointTractions
             (
                 selected_,
-                (P*r.area/r.nFound)*r.direction,
-                (0.5*P)*symm(sqr(r.direction))
+                f*r.direction,
+                (0.5*f*r.nPoints/r.area)*sqr(r.direction)
             );
             r.lastPosition = position/r.nFound;
         }
