@@ -158,6 +158,28 @@ void streamCollide
 } // End anonymous namespace
 
 
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::tmp<Foam::scalarField> Foam::latticeAdvectionDiffusion::inflowValues
+(
+    const fvPatchScalarField& Cp
+)
+{
+    if (Cp.type() == "inletOutlet")
+    {
+        return tmp<scalarField>::New
+        (
+            refCast<const inletOutletFvPatchScalarField>(Cp).refValue()
+        );
+    }
+    if (Cp.type() == "fixedValue")
+    {
+        return tmp<scalarField>::New(Cp);
+    }
+    return tmp<scalarField>::New();
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::latticeAdvectionDiffusion::setRelaxation(const dictionary& dict)
@@ -210,21 +232,13 @@ void Foam::latticeAdvectionDiffusion::buildLinks
         {
             continue;
         }
-        if (type == "zeroGradient")
-        {
-            continue;
-        }
         if (allowed.found(type))
         {
             // The values the patch puts into the water: as the field's own,
             // finite and non-negative (a negative inflow would make the
             // suspension negative downstream)
-            const scalarField given
-            (
-                type == "inletOutlet"
-              ? refCast<const inletOutletFvPatchScalarField>(Cp).refValue()
-              : scalarField(Cp)
-            );
+            const tmp<scalarField> tgiven(inflowValues(Cp));
+            const scalarField& given = tgiven();
             forAll(given, i)
             {
                 if (!(given[i] >= 0 && given[i] < GREAT))

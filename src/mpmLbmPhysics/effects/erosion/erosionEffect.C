@@ -12,7 +12,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "erosionEffect.H"
-#include "inletOutletFvPatchFields.H"
 #include "freeSurfaceEffect.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
@@ -306,73 +305,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         emptiedMass_.setSize(nBox, Zero);
         emptiedWeight_.setSize(nBox, Zero);
     }
-    for (const latticeAdvectionDiffusion& susp : suspensions_)
-    {
-        if (susp.field().dimensions() != dimDensity)
-        {
-            FatalIOErrorInFunction(dict_)
-                << susp.field().objectPath() << ": the suspended fines"
-                << " are a mass per volume of water " << dimDensity
-                << ", not " << susp.field().dimensions()
-                << exit(FatalIOError);
-        }
-        // No more grains in a volume of water than grains fill it (the
-        // field a run starts from; the limit the erosion keeps may be
-        // overshot: a time it wrote is not checked) and no inflow above
-        // that limit
-        const volScalarField& C = susp.field();
-        const scalar rhoS = law_->rhoSolid();
-        const Time& runTime = scene.mesh().time();
-        const bool written = returnReduce
-        (
-            isFile(runTime.timePath()/"uniform"/"erosionState"),
-            orOp<bool>()
-        );
-        IFstream fieldStream(C.objectPath());
-        const dictionary fieldDict(fieldStream);
-        forAll(C, celli)
-        {
-            if (!written && C[celli] > rhoS)
-            {
-                FatalIOErrorInFunction(fieldDict)
-                    << C.objectPath() << ": " << C.name() << " " << C[celli]
-                    << " kg/m3 in cell " << celli << " is more grains than"
-                    << " a volume of them holds: the suspended fines must"
-                    << " lie in [0, rhoSolid " << rhoS << "] kg/m3"
-                    << " (maxConcentration " << maxConcentration_ << ")"
-                    << exit(FatalIOError);
-            }
-        }
-        forAll(C.boundaryField(), patchi)
-        {
-            const fvPatchScalarField& Cp = C.boundaryField()[patchi];
-            if (Cp.type() != "fixedValue" && Cp.type() != "inletOutlet")
-            {
-                continue;
-            }
-            const scalarField given
-            (
-                Cp.type() == "inletOutlet"
-              ? refCast<const inletOutletFvPatchScalarField>(Cp).refValue()
-              : scalarField(Cp)
-            );
-            if (given.size() && max(given) > maxConcentration_)
-            {
-                FatalIOErrorInFunction
-                (
-                    fieldDict.subDict("boundaryField")
-                        .subDict(Cp.patch().name())
-                )
-                    << C.objectPath() << ": patch " << Cp.patch().name()
-                    << " (" << Cp.type() << ") brings in " << max(given)
-                    << " kg/m3 of " << C.name() << ", above the most fines"
-                    << " the pore water carries, maxConcentration "
-                    << maxConcentration_ << " kg/m3 (rhoSolid " << rhoS
-                    << "): give a concentration in [0, " << maxConcentration_
-                    << "]" << exit(FatalIOError);
-            }
-        }
-    }
+    checkSuspensions();
     // Filtration fills clean pores: points without fines start at none
     if
     (
