@@ -39,6 +39,16 @@ inline void Foam::shapeTransfer<Shape>::withDimension
 
 
 template<class Shape>
+inline bool Foam::shapeTransfer<Shape>::hasLoads
+(
+    const materialPointSoil& soil
+)
+{
+    return soil.pointForce_.size() || soil.pointStress_.size();
+}
+
+
+template<class Shape>
 template<Foam::label D>
 inline void Foam::shapeTransfer<Shape>::pointWeights
 (
@@ -58,7 +68,7 @@ inline void Foam::shapeTransfer<Shape>::pointWeights
 
 
 template<class Shape>
-template<Foam::label D, bool Apic, bool Forces>
+template<Foam::label D, bool Apic, bool Forces, bool Loads>
 void Foam::shapeTransfer<Shape>::p2gPoints
 (
     materialPointSoil& soil,
@@ -74,10 +84,11 @@ void Foam::shapeTransfer<Shape>::p2gPoints
     const scalar invDx = 1.0/dx;
     const label sy = soil.lattice_.stride().y();
     const label sz = soil.lattice_.stride().z();
+    // Loads: some points carry a force or a stress of their own (a surface
+    // traction and its moment: see materialPointSoil::addPointTractions);
+    // a template flag, so that a scene without loads tests nothing per point
     const vector* fExt =
         soil.pointForce_.size() ? soil.pointForce_.cdata() : nullptr;
-    // (a surface traction's moment, added to the stress of the points it
-    // loads: see materialPointSoil::addPointTractions)
     const symmTensor* sExt =
         soil.pointStress_.size() ? soil.pointStress_.cdata() : nullptr;
     const label nBox = soil.gridMass_.size();
@@ -138,12 +149,14 @@ void Foam::shapeTransfer<Shape>::p2gPoints
         vector By(Zero), Bz(Zero);
         if constexpr (Forces)
         {
-            const vector mg(fExt ? mp*g + fExt[p] : mp*g);
-            const symmTensor Bs
-            (
-                -(soil.points_.V[p]*invDx)
-               *(sExt ? soil.points_.sigma[p] + sExt[p] : soil.points_.sigma[p])
-            );
+            vector mg(mp*g);
+            symmTensor sigma(soil.points_.sigma[p]);
+            if constexpr (Loads)
+            {
+                if (fExt) { mg += fExt[p]; }
+                if (sExt) { sigma += sExt[p]; }
+            }
+            const symmTensor Bs(-(soil.points_.V[p]*invDx)*sigma);
             By = vector(Bs.xy(), Bs.yy(), Bs.yz());
             Bz = vector(Bs.xz(), Bs.yz(), Bs.zz());
             for (label a = 0; a < S; ++a)
@@ -250,7 +263,7 @@ void Foam::shapeTransfer<Shape>::p2gPoints
 
 
 template<class Shape>
-template<Foam::label D>
+template<Foam::label D, bool Loads>
 void Foam::shapeTransfer<Shape>::p2gForcePoints
 (
     materialPointSoil& soil,
@@ -264,10 +277,11 @@ void Foam::shapeTransfer<Shape>::p2gForcePoints
     const scalar invDx = 1.0/soil.lattice_.dx();
     const label sy = soil.lattice_.stride().y();
     const label sz = soil.lattice_.stride().z();
+    // Loads: some points carry a force or a stress of their own (a surface
+    // traction and its moment: see materialPointSoil::addPointTractions);
+    // a template flag, so that a scene without loads tests nothing per point
     const vector* fExt =
         soil.pointForce_.size() ? soil.pointForce_.cdata() : nullptr;
-    // (a surface traction's moment, added to the stress of the points it
-    // loads: see materialPointSoil::addPointTractions)
     const symmTensor* sExt =
         soil.pointStress_.size() ? soil.pointStress_.cdata() : nullptr;
     vector* __restrict__ force = soil.gridForce_.data();
@@ -281,12 +295,14 @@ void Foam::shapeTransfer<Shape>::p2gForcePoints
             soil, p, soil.latticeCoordinates(soil.points_.x[p]), sw
         );
         const scalar mp = soil.points_.m[p];
-        const vector mg(fExt ? mp*g + fExt[p] : mp*g);
-        const symmTensor B
-        (
-            -(soil.points_.V[p]*invDx)
-           *(sExt ? soil.points_.sigma[p] + sExt[p] : soil.points_.sigma[p])
-        );
+        vector mg(mp*g);
+        symmTensor sigma(soil.points_.sigma[p]);
+        if constexpr (Loads)
+        {
+            if (fExt) { mg += fExt[p]; }
+            if (sExt) { sigma += sExt[p]; }
+        }
+        const symmTensor B(-(soil.points_.V[p]*invDx)*sigma);
         const vector Bx(B.xx(), B.xy(), B.xz());
         const vector By(B.xy(), B.yy(), B.yz());
         const vector Bz(B.xz(), B.yz(), B.zz());
@@ -485,10 +501,31 @@ void Foam::shapeTransfer<Shape>::p2g
         [&](auto D)
         {
             constexpr label d = decltype(D)::value;
-            if (apic && withForces) { p2gPoints<d, true, true>(soil, g); }
-            else if (apic)          { p2gPoints<d, true, false>(soil, g); }
-            else if (withForces)    { p2gPoints<d, false, true>(soil, g); }
-            else                    { p2gPoints<d, false, false>(soil, g); }
+            const bool loads = withForces && hasLoads(soil);
+            if (apic && loads)
+            {
+                p2gPoints<d, true, true, true>(soil, g);
+            }
+            else if (apic && withForces)
+            {
+                p2gPoints<d, true, true, false>(soil, g);
+            }
+            else if (apic)
+            {
+                p2gPoints<d, true, false, false>(soil, g);
+            }
+            else if (loads)
+            {
+                p2gPoints<d, false, true, true>(soil, g);
+            }
+            else if (withForces)
+            {
+                p2gPoints<d, false, true, false>(soil, g);
+            }
+            else
+            {
+                p2gPoints<d, false, false, false>(soil, g);
+            }
         }
     );
 }
@@ -504,7 +541,12 @@ void Foam::shapeTransfer<Shape>::p2gForces
     withDimension
     (
         soil,
-        [&](auto D) { p2gForcePoints<decltype(D)::value>(soil, g); }
+        [&](auto D)
+        {
+            constexpr label d = decltype(D)::value;
+            if (hasLoads(soil)) { p2gForcePoints<d, true>(soil, g); }
+            else                { p2gForcePoints<d, false>(soil, g); }
+        }
     );
 }
 
