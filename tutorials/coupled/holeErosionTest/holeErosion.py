@@ -38,12 +38,16 @@
 #     unit depth (function object flowMeter) at the written times against
 #     the slot's Poiseuille discharge q = (2/3) R^3 (dP/L)/mu with the
 #     measured R, and the piezometers (function object piezometers) at the
-#     last written time against the linear drop dP (1 - x/L); with --png,
+#     last written time against the linear drop dP (1 - x/L); with
+#     --level phi_s, the half-width Rs at the nodal solid fraction phi_s
+#     (the erosion's surfaceSolidFraction) against Rs(t0) exp((t - t0)/t_er)
+#     from the first written time t0 (the wall stress the surface sees is
+#     (dP/L) Rs); with --png,
 #     the plot: R(t), the discharge against time with Poiseuille's and
 #     (R0 exp(t/t_er))^3's, the piezometers' pressures.
 #
 # Usage
-#     holeErosion.py CASE [--tau] [--flow] [--png FILE]
+#     holeErosion.py CASE [--tau] [--flow] [--level PHI] [--png FILE]
 #------------------------------------------------------------------------------
 import math
 import os
@@ -182,6 +186,7 @@ def main():
     G = dP/length
     tEr = rhoD/(kEr*G) if kEr > 0 else float('inf')
     Rc = tauC/G
+    # R: the half level of the soil's nodal solid fraction (0.6 inside)
     level = 0.3
 
     def halfWidth(phi):
@@ -206,6 +211,22 @@ def main():
         Ra = Rc + (R0 - Rc)*math.exp(float(t)/tEr)
         rows.append((float(t), R/R0, Ra/R0, R/Ra - 1))
         print('R %s %.6f %.6f %.6f' % (t, R/R0, Ra/R0, R/Ra - 1))
+
+    # --level phi_s: the half-width Rs of the surface the erosion sees
+    # (surfaceSolidFraction phi_s), whose wall stress is G Rs: it grows as
+    # Rs(t0) exp((t - t0)/t_er) from the first written time t0 (tauC 0)
+    if '--level' in args:
+        level = float(args[args.index('--level') + 1])
+        first = None
+        for t in foamio.times(case):
+            if not os.path.exists(os.path.join(case, t, 'soilFraction')):
+                continue
+            Rs = halfWidth(foamio.read(case, t, 'soilFraction'))
+            if first is None:
+                first = (float(t), Rs)
+            ratio = math.exp((float(t) - first[0])/tEr)
+            print('S %s %.6f %.6f %.6f %.6f' % (t, Rs/R0, Rs/first[1], ratio,
+                                                Rs/first[1]/ratio - 1))
 
     # The flow meter (m3/s through the depth) and the piezometers
     flow = series(case, 'flowMeter', 'surfaceFieldValue.dat')
@@ -317,6 +338,22 @@ def pipe(case, args, png, nx, ny, nz, dx, length, mu, kEr, tauC, rhoD, dP,
         Ra = Rc + (R0 - Rc)*math.exp(float(t)/tEr)
         rows.append((float(t), R/R0, Ra/R0, R/Ra - 1))
         print('R %s %.6f %.6f %.6f' % (t, R/R0, Ra/R0, R/Ra - 1))
+
+    # --level phi_s: the half-width Rs of the surface the erosion sees
+    # (surfaceSolidFraction phi_s), whose wall stress is G Rs: it grows as
+    # Rs(t0) exp((t - t0)/t_er) from the first written time t0 (tauC 0)
+    if '--level' in args:
+        level = float(args[args.index('--level') + 1])
+        first = None
+        for t in foamio.times(case):
+            if not os.path.exists(os.path.join(case, t, 'soilFraction')):
+                continue
+            Rs = halfWidth(foamio.read(case, t, 'soilFraction'))
+            if first is None:
+                first = (float(t), Rs)
+            ratio = math.exp((float(t) - first[0])/tEr)
+            print('S %s %.6f %.6f %.6f %.6f' % (t, Rs/R0, Rs/first[1], ratio,
+                                                Rs/first[1]/ratio - 1))
 
     flow = series(case, 'flowMeter', 'surfaceFieldValue.dat')
     piezo = series(case, 'piezometers', 'p')

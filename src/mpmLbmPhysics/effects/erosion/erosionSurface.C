@@ -36,7 +36,9 @@ Description
 
     The eroded mass. Each surface node erodes the law's rate times its
     share of the surface's area, dx^(D-1) sum |m_d| over the axes d it
-    crosses the surface along (see surfaceDemand), in the step's time. The mass
+    crosses the surface along (see surfaceDemand), in the step's time (a
+    surface node no point reaches, with a low surfaceSolidFraction, hands
+    it to its neighbour inward). The mass
     is taken from the points in the node's support in proportion to their
     weight there (the outer points go first; a weight on a node beyond a
     wall counts for the node it folds into, as the soil's own transfers
@@ -293,23 +295,33 @@ void Foam::physicsEffects::erosion::surfaceDemand()
         }
         wallShear_[n] = tw;
 
-        // At most what the node's pore water can still carry
+        // The node whose points give the mass: the surface node, or, where
+        // no point reaches it (a surfaceSolidFraction below the solid
+        // fraction of the soil's outermost nodes: the water node beyond
+        // them has none, and with its demand there nothing eroded), its
+        // neighbour inward, whose points are the soil's surface
+        const label giver = phi_[n] > 0 ? n : in;
+
+        // At most what that node's pore water can still carry
         const scalar rate = law_->surfaceRate(mag(tw));
         if (rate > 0)
         {
             const scalar room =
                 (
-                    maxConcentration_*max(1 - phi_[n], scalar(0.01))
-                   *wetFraction(n)
-                  - Phi(n)
+                    maxConcentration_*max(1 - phi_[giver], scalar(0.01))
+                   *wetFraction(giver)
+                  - Phi(giver)
                 )*lattice.cellVolume();
-            demand_[n] = max
+            demand_[giver] += max
             (
-                min(rate*columnArea*areaFactor*dt, room),
+                min(rate*columnArea*areaFactor*dt, room - demand_[giver]),
                 scalar(0)
             );
         }
     }
+
+    // (a demand handed inward may sit on a halo node: to its owner)
+    halo.addToOwners({haloExchange::field(demand_)});
 }
 
 
