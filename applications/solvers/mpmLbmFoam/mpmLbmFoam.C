@@ -130,6 +130,7 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
+        scene.keepDeltaT();
         ++runTime;
 
         scene.evolve();

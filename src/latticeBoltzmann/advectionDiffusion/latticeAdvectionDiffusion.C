@@ -16,6 +16,7 @@ License
 #include "inletOutletFvPatchFields.H"
 #include "emptyPolyPatch.H"
 #include "IFstream.H"
+#include "caseChecks.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 
@@ -243,8 +244,10 @@ void Foam::latticeAdvectionDiffusion::buildLinks
             {
                 if (!(given[i] >= 0 && given[i] < GREAT))
                 {
-                    IFstream is(C_.objectPath());
-                    const dictionary fieldDict(is);
+                    const dictionary fieldDict
+                    (
+                        fileDictionary(C_.objectPath())
+                    );
                     FatalIOErrorInFunction
                     (
                         fieldDict.subDict("boundaryField").subDict(pp.name())
@@ -258,8 +261,7 @@ void Foam::latticeAdvectionDiffusion::buildLinks
             }
             continue;
         }
-        IFstream is(C_.objectPath());
-        const dictionary fieldDict(is);
+        const dictionary fieldDict(fileDictionary(C_.objectPath()));
         FatalIOErrorInFunction
         (
             fieldDict.subDict("boundaryField").subDict(pp.name())

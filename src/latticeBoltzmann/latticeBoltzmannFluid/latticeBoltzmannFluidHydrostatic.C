@@ -268,7 +268,10 @@ void Foam::latticeBoltzmannFluid::writeHydrostaticState() const
     os  << "hydrostatic " << (hydrostatic_.size() ? "analytic" : "lattice")
         << ";" << nl
         << "gradient " << hydrostaticGradient_ << ";" << nl
-        << "reference " << hydrostaticRef_ << ";" << nl;
+        << "reference " << hydrostaticRef_ << ";" << nl
+        // (the step the populations' lattice units were made with: a
+        // restart with another is refused)
+        << "deltaT " << units_.dt() << ";" << nl;
     os.flush();
     if (!os.good())
     {

@@ -116,6 +116,28 @@ void Foam::latticeBoltzmannFluid::initialise()
                     << " populations carry it analytic or lattice"
                     << exit(FatalIOError);
             }
+            // The step: the populations hold velocities in dx/dt and
+            // pressures in rho (dx/dt)^2/3, read with another step they
+            // are another flow (a restart at half the step: the pressure
+            // four times, the water thrown about at once)
+            scalar writtenDt = 0;
+            if
+            (
+                state.readIfPresent("deltaT", writtenDt)
+             && mag(writtenDt - units_.dt()) > 1e-9*units_.dt()
+            )
+            {
+                FatalIOErrorInFunction(state)
+                    << "The water's populations in " << runTime.timePath()
+                    << " were made with deltaT " << writtenDt << " s;"
+                    << " system/controlDict has deltaT " << units_.dt()
+                    << " s. The populations hold the water's velocity in"
+                    << " units of dx/deltaT and its pressure in rho"
+                    << " (dx/deltaT)^2/3: read with another step they are"
+                    << " another flow." << nl << "    Continue with deltaT "
+                    << writtenDt << ", or start from 0 with the new step"
+                    << exit(FatalIOError);
+            }
             writtenHydrostaticGradient_ = state.get<vector>("gradient");
             writtenHydrostaticRef_ = state.get<point>("reference");
             mode =

@@ -15,6 +15,7 @@ License
 #include "lbmFreeSurface.H"
 #include "Map.H"
 #include "IFstream.H"
+#include "caseChecks.H"
 #include "DynamicList.H"
 #include "emptyPolyPatch.H"
 #include "wordRes.H"
@@ -50,8 +51,7 @@ void Foam::lbmBoundaries::classifyPatches
     autoPtr<dictionary> Udict, pdict;
     auto fieldDict = [](const volScalarField::Mesh&, const regIOobject& fld)
     {
-        IFstream is(fld.objectPath());
-        return autoPtr<dictionary>::New(is);
+        return autoPtr<dictionary>::New(fileDictionary(fld.objectPath()));
     };
 
     const wordList wallTypes({"noSlip"});

@@ -17,6 +17,7 @@ License
 
 #include "lbmBoundaries.H"
 #include "IFstream.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -281,8 +282,7 @@ void Foam::lbmBoundaries::setHydrostatic
         {
             if (absorbing_[patchi])
             {
-                IFstream is(p.objectPath());
-                const dictionary d(is);
+                const dictionary d(fileDictionary(p.objectPath()));
                 FatalIOErrorInFunction
                 (
                     d.subDict("boundaryField")

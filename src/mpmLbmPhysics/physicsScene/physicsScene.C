@@ -212,6 +212,7 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
     fieldTime_(0),
     fieldRefreshes_(0),
     progressInterval_(dict_.getOrDefault<scalar>("progressInterval", 10)),
+    deltaT_(runTime.deltaTValue()),
     nSteps_(0),
     nStepsTotal_(0),
     projected_(false),
@@ -320,6 +321,28 @@ bool Foam::physicsScene::needsSoilWithWater() const
         }
     }
     return false;
+}
+
+
+void Foam::physicsScene::keepDeltaT()
+{
+    const scalar dt = runTime_.deltaTValue();
+    if (dt != deltaT_)
+    {
+        // (the step taken at the new deltaT while the lattice steps the
+        // old one ran the water at twice its labelled time, unsaid)
+        WarningInFunction
+            << "deltaT " << dt << " s read from "
+            << runTime_.system()/"controlDict" << " while running is"
+            << " not taken: this run keeps deltaT " << deltaT_ << " s, with"
+            << " which its lattice units were made (the water's velocity in"
+            << " dx/deltaT, its pressure in rho (dx/deltaT)^2/3, its tau)."
+            << nl << "    To change the step, end the run (stopAt writeNow)"
+            << " and start from 0 with the new deltaT; a restart with"
+            << " another deltaT than the written water's is refused" << nl
+            << endl;
+        runTime_.setDeltaT(deltaT_, false);
+    }
 }
 
 

@@ -101,6 +101,24 @@ void Foam::checkFunctionIntervals
 }
 
 
+Foam::dictionary Foam::fileDictionary(const fileName& path)
+{
+    IFstream is(path);
+    token first(is);
+    if (is.good() && first.isWord() && first.wordToken() == "FoamFile")
+    {
+        // (as IOobject::readHeader sets the stream's format)
+        const dictionary header(is);
+        is.format(header.getOrDefault<word>("format", "ascii"));
+    }
+    else
+    {
+        is.putBack(first);
+    }
+    return dictionary(is);
+}
+
+
 void Foam::checkControlDict(const argList& args)
 {
     const fileName path =

@@ -15,7 +15,7 @@ License
 
 #include "erosionEffect.H"
 #include "physicsScene.H"
-#include "IFstream.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -31,6 +31,9 @@ void Foam::physicsEffects::erosion::checkSuspensions() const
         orOp<bool>()
     );
     const scalar rhoS = law_->rhoSolid();
+    // (a law proportional to the suspended fines erodes nothing from clear
+    // water: whether any water holds or brings fines)
+    scalar mostSuspended = 0;
     for (const latticeAdvectionDiffusion& susp : suspensions_)
     {
         const volScalarField& C = susp.field();
@@ -41,13 +44,15 @@ void Foam::physicsEffects::erosion::checkSuspensions() const
                 << " volume of water " << dimDensity << ", not "
                 << C.dimensions() << exit(FatalIOError);
         }
-        IFstream fieldStream(C.objectPath());
-        const dictionary fieldDict(fieldStream);
+        // (the file as a dictionary, for a message naming its line: read
+        // only for one, in the format its header names)
+        auto fieldDict = [&C]() { return fileDictionary(C.objectPath()); };
         forAll(C, celli)
         {
+            mostSuspended = max(mostSuspended, C[celli]);
             if (!written && C[celli] > rhoS)
             {
-                FatalIOErrorInFunction(fieldDict)
+                FatalIOErrorInFunction(fieldDict())
                     << C.objectPath() << ": " << C.name() << " " << C[celli]
                     << " kg/m3 in cell " << celli << " is more grains than"
                     << " a volume of them holds: the suspended fines must"
@@ -64,11 +69,15 @@ void Foam::physicsEffects::erosion::checkSuspensions() const
                 latticeAdvectionDiffusion::inflowValues(Cp)
             );
             const scalarField& given = tgiven();
+            if (given.size())
+            {
+                mostSuspended = max(mostSuspended, max(given));
+            }
             if (given.size() && max(given) > maxConcentration_)
             {
                 FatalIOErrorInFunction
                 (
-                    fieldDict.subDict("boundaryField")
+                    fieldDict().subDict("boundaryField")
                         .subDict(Cp.patch().name())
                 )
                     << C.objectPath() << ": patch " << Cp.patch().name()
@@ -80,6 +89,23 @@ void Foam::physicsEffects::erosion::checkSuspensions() const
                     << "]" << exit(FatalIOError);
             }
         }
+    }
+    reduce(mostSuspended, maxOp<scalar>());
+    if
+    (
+        !written && suspensions_.size() && law_->needsSuspendedFines()
+     && !(mostSuspended > 0)
+    )
+    {
+        const word lawName(dict_.get<word>("erosionLaw"));
+        IOWarningInFunction(dict_.subOrEmptyDict(lawName + "Coeffs"))
+            << "erosionLaw " << lawName << " with seedConcentration 0"
+            << " erodes in proportion to the fines already in suspension,"
+            << " and the water holds none (" << suspensions_[0].field().name()
+            << " 0 in every cell) and no patch brings any in: nothing will"
+            << " erode. Give a seedConcentration > 0 (e.g. 1e-3, a seed of"
+            << " fluidized fines) or fines in 0/"
+            << suspensions_[0].field().name() << nl << endl;
     }
 }
 

@@ -61,8 +61,10 @@ Foam::physicsEffects::gravity::gravity(physicsScene& scene)
     }
     g_ = g.value();
     {
-        IFstream is(g.filePath());
-        checkInPlane(scene.lattice().twoD(), g_, "value", dictionary(is));
+        checkInPlane
+        (
+            scene.lattice().twoD(), g_, "value", fileDictionary(g.filePath())
+        );
     }
 
     // The phases that feel it: all those in the scene unless listed
