@@ -229,19 +229,35 @@ def read_cloud(case, time, field, cloud='materialPoints', by_identity=True):
     return data
 
 
+def newest_file(folder, file):
+    """folder/file, or the newest of it and its variants <stem>_<time><ext>:
+    a run whose function object finds its file there already (a second
+    restart from the same time) writes <stem>_<start time><ext> beside it,
+    as OpenFOAM's writeFile does, rather than overwrite the first run's.
+    None if there is none."""
+    stem, ext = os.path.splitext(file)
+    variant = re.compile(re.escape(stem) + r'_[-+0-9.eE]+' + re.escape(ext)
+                         + '$') if ext else None
+    candidates = [os.path.join(folder, f) for f in os.listdir(folder)
+                  if f == file or (variant and variant.match(f))]
+    candidates = [c for c in candidates if os.path.isfile(c)]
+    return max(candidates, key=os.path.getmtime) if candidates else None
+
+
 def post_processing(case, name, file):
     """The rows of postProcessing/<name>/<start>/<file> over every start
     folder in time order, as numbers (a vector's parentheses dropped): a
     restart writes a new start folder, whose rows replace the earlier
-    ones from its start time on. An empty array if there is none."""
+    ones from its start time on; in a folder, the newest run's file
+    (newest_file). An empty array if there is none."""
     root = os.path.join(case, 'postProcessing', name)
     rows = []
     if not os.path.isdir(root):
         return np.zeros((0, 0))
     number = re.compile(r'[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?')
     for start in sorted(os.listdir(root), key=float):
-        path = os.path.join(root, start, file)
-        if not os.path.isfile(path):
+        path = newest_file(os.path.join(root, start), file)
+        if path is None:
             continue
         rows = [r for r in rows if r[0] <= float(start)]
         for line in open(path):

@@ -36,7 +36,6 @@
 #     vertical effective stress too.
 #------------------------------------------------------------------------------
 import os
-import re
 import sys
 import numpy as np
 
@@ -101,21 +100,10 @@ def read(case):
 
 
 def series(case, name, file):
-    """Time and values of postProcessing/<name>/<start>/<file>, every start
-    in order (a restart continues in a new folder)"""
-    root = os.path.join(case, 'postProcessing', name)
-    rows = []
-    if os.path.isdir(root):
-        for start in sorted(os.listdir(root), key=float):
-            path = os.path.join(root, start, file)
-            if not os.path.exists(path):
-                continue
-            for line in open(path):
-                if line.startswith('#') or not line.strip():
-                    continue
-                rows.append([float(v) for v in re.findall(
-                    r'[-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?', line)])
-    return np.array(rows) if rows else np.zeros((0, 4))
+    """Time and values of postProcessing/<name>/<start>/<file> (a restart's
+    folder replacing the rows from its start: foamio.post_processing)"""
+    rows = foamio.post_processing(case, name, file)
+    return rows if rows.size else np.zeros((0, 4))
 
 
 PIEZOMETER_Y = 0.01

@@ -72,22 +72,10 @@ def entry(path, key):
 
 
 def series(case, name, file):
-    """Time and values of postProcessing/<name>/<start>/<file>, every start
-    in order (a restart continues in a new folder)"""
-    root = os.path.join(case, 'postProcessing', name)
-    rows = []
-    if not os.path.isdir(root):
-        return rows
-    for start in sorted(os.listdir(root), key=float):
-        path = os.path.join(root, start, file)
-        if not os.path.exists(path):
-            continue
-        for line in open(path):
-            if line.startswith('#') or not line.strip():
-                continue
-            rows.append([float(v) for v in re.findall(
-                r'[-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?', line)])
-    return rows
+    """Time and values of postProcessing/<name>/<start>/<file> as lists (a
+    restart's folder replacing the rows from its start:
+    foamio.post_processing)"""
+    return foamio.post_processing(case, name, file).tolist()
 
 
 
@@ -338,22 +326,6 @@ def pipe(case, args, png, nx, ny, nz, dx, length, mu, kEr, tauC, rhoD, dP,
         Ra = Rc + (R0 - Rc)*math.exp(float(t)/tEr)
         rows.append((float(t), R/R0, Ra/R0, R/Ra - 1))
         print('R %s %.6f %.6f %.6f' % (t, R/R0, Ra/R0, R/Ra - 1))
-
-    # --level phi_s: the half-width Rs of the surface the erosion sees
-    # (surfaceSolidFraction phi_s), whose wall stress is G Rs: it grows as
-    # Rs(t0) exp((t - t0)/t_er) from the first written time t0 (tauC 0)
-    if '--level' in args:
-        level = float(args[args.index('--level') + 1])
-        first = None
-        for t in foamio.times(case):
-            if not os.path.exists(os.path.join(case, t, 'soilFraction')):
-                continue
-            Rs = halfWidth(foamio.read(case, t, 'soilFraction'))
-            if first is None:
-                first = (float(t), Rs)
-            ratio = math.exp((float(t) - first[0])/tEr)
-            print('S %s %.6f %.6f %.6f %.6f' % (t, Rs/R0, Rs/first[1], ratio,
-                                                Rs/first[1]/ratio - 1))
 
     flow = series(case, 'flowMeter', 'surfaceFieldValue.dat')
     piezo = series(case, 'piezometers', 'p')

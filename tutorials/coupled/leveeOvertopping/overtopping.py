@@ -57,6 +57,13 @@ def main():
     rows = foamio.post_processing(case, 'erosion', 'erosion.dat')
     if rows.shape[0] == 0:
         sys.exit('%s: no postProcessing/erosion/<start>/erosion.dat' % case)
+    # (written times past the balance's last row are an earlier run's,
+    # left behind by a restart from before them: not this run's state)
+    stale = [t for t in times if float(t) > rows[-1, 0] + 1e-9]
+    if stale:
+        print('Written times after the erosion balance ends (%g s), from an'
+              ' earlier run, skipped: %s' % (rows[-1, 0], ' '.join(stale)))
+        times = [t for t in times if t not in stale]
     tIn, qIn = meter(case, 'reservoirMeter')
     tOut, qOut = meter(case, 'tailwaterMeter')
 

@@ -20,7 +20,6 @@
 #     Prints the first and last readings; --png plots them against time.
 #------------------------------------------------------------------------------
 import os
-import re
 import sys
 import numpy as np
 
@@ -39,21 +38,9 @@ PIEZOMETERS = ('waterside toe, x = 0.56 m', 'centre, x = 0.8 m',
 
 
 def series(case, name, file):
-    """Time and values of postProcessing/<name>/<start>/<file>, every start
-    in order (a restart continues in a new folder)"""
-    root = os.path.join(case, 'postProcessing', name)
-    rows = []
-    if os.path.isdir(root):
-        for start in sorted(os.listdir(root), key=float):
-            path = os.path.join(root, start, file)
-            if not os.path.exists(path):
-                continue
-            for line in open(path):
-                if line.startswith('#') or not line.strip():
-                    continue
-                rows.append([float(v) for v in re.findall(
-                    r'[-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?', line)])
-    return np.array(rows)
+    """Time and values of postProcessing/<name>/<start>/<file> (a restart's
+    folder replacing the rows from its start: foamio.post_processing)"""
+    return foamio.post_processing(case, name, file)
 
 
 def main():

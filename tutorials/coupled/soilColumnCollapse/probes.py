@@ -12,32 +12,25 @@
 #     stress, the pore pressure and the displacement.
 #------------------------------------------------------------------------------
 import os
-import re
 import sys
 import numpy as np
 import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
+sys.path.insert(0, os.path.join(os.environ['MPMLBM_PROJECT_DIR'], 'tests', 'lib'))
+import foamio   # noqa: E402  (the project's reader of OpenFOAM's files)
+
 case = sys.argv[1]
 png = sys.argv[sys.argv.index('--png') + 1]
 
 
 def series(name, file):
-    """Time and values of every postProcessing/<name>/<start>/<file> in
-    start order (a restart continues in a new folder)"""
-    root = os.path.join(case, 'postProcessing', name)
-    rows = []
-    for start in sorted(os.listdir(root), key=float):
-        path = os.path.join(root, start, file)
-        if not os.path.exists(path):
-            continue
-        for line in open(path):
-            if line.startswith('#'):
-                continue
-            rows.append([float(v) for v in
-                         re.findall(r'[-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?', line)])
-    return np.array(rows) if rows else np.zeros((0, 2))
+    """Time and values of every postProcessing/<name>/<start>/<file> (a
+    restart's folder replacing the rows from its start:
+    foamio.post_processing)"""
+    rows = foamio.post_processing(case, name, file)
+    return rows if rows.size else np.zeros((0, 2))
 
 
 force = series('farWall', 'force.dat')
