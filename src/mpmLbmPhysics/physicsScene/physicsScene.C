@@ -241,6 +241,7 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
 
     // A restart's files as written, before anything reads them
     restartManifest::checkFiles(runTime);
+    restartManifest::checkEffects(runTime, names_);
 
     // The lattice every effect shares, with the widest halo they declare
     label haloWidth = 1;
@@ -522,7 +523,10 @@ void Foam::physicsScene::write()
         effects_[i].restartState(state);
         exact.append(effects_[i].stateFiles());
     }
-    restartManifest::endWrite(runTime_, "mpmLbmFoam", state, exact);
+    restartManifest::endWrite
+    (
+        runTime_, "mpmLbmFoam", state, exact, wordList(), names_
+    );
     writeTime_ += t0.elapsed();
 }
 

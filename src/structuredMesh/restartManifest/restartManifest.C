@@ -29,6 +29,7 @@ License
 const Foam::word Foam::restartManifest::incompleteMarker("writeIncomplete");
 const Foam::word Foam::restartManifest::manifestName("restartManifest");
 Foam::DynamicList<Foam::fileName> Foam::restartManifest::suspects;
+Foam::wordList Foam::restartManifest::droppedEffects;
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -398,7 +399,8 @@ void Foam::restartManifest::endWrite
     const word& writer,
     const stateTable& localState,
     const wordList& exactFiles,
-    const wordList& recordOnly
+    const wordList& recordOnly,
+    const wordList& effects
 )
 {
     const fileName dir = runTime.timePath();
@@ -468,6 +470,10 @@ void Foam::restartManifest::endWrite
     body.writeEntry("writer", writer);
     body.writeEntry("nProcessors", Pstream::nProcs());
     body.writeEntry("processor", Pstream::myProcNo());
+    if (effects.size())
+    {
+        body.writeEntry("effects", effects);
+    }
     local.writeEntry("local", body);
     global.writeEntry("global", body);
     body.writeEntry("files", stringList(names));
@@ -635,6 +641,61 @@ void Foam::restartManifest::checkFiles(const Time& runTime)
 }
 
 
+Foam::string Foam::restartManifest::effectsText(const wordList& effects)
+{
+    // (as a scene's effects entry reads, without OpenFOAM's size prefix)
+    string text("(");
+    forAll(effects, i)
+    {
+        text += (i ? " " : "") + effects[i];
+    }
+    return text + ")";
+}
+
+
+void Foam::restartManifest::checkEffects
+(
+    const Time& runTime,
+    const wordList& effects
+)
+{
+    droppedEffects.clear();
+    const fileName path = runTime.timePath()/"uniform"/manifestName;
+    wordList written;
+    if (Pstream::master() && isFile(path))
+    {
+        // (an unreadable manifest is checkFiles' to report)
+        catchFatal
+        (
+            [&]() { readManifest(path).readIfPresent("effects", written); },
+            false
+        );
+    }
+    Pstream::scatter(written);
+    DynamicList<word> dropped;
+    for (const word& e : written)
+    {
+        if (!effects.found(e))
+        {
+            dropped.append(e);
+        }
+    }
+    droppedEffects = dropped;
+    if (dropped.size())
+    {
+        WarningInFunction
+            << "Time " << runTime.timeName() << " was written by a run with"
+            << " the effects " << effectsText(written).c_str() << "; this run has "
+            << effectsText(effects).c_str() << ": the state of "
+            << effectsText(droppedEffects).c_str() << " in that time (the"
+            << " fields, points or populations it keeps) is not read, and"
+            << " is not written from here on." << nl
+            << "    To keep it, restart with the effects of that run" << nl
+            << endl;
+    }
+}
+
+
 void Foam::restartManifest::checkState
 (
     const Time& runTime,
@@ -788,6 +849,17 @@ void Foam::restartManifest::checkState
                 FatalError<< " " << f.c_str();
             }
             FatalError<< nl;
+        }
+        if (droppedEffects.size())
+        {
+            // (not damage: the state an effect kept, its own and the
+            // others' totals with it, e.g. the water a free surface holds)
+            FatalError
+                << "    The run that wrote it had the effects "
+                << effectsText(droppedEffects).c_str() << ", which this run lacks:"
+                << " their state"
+                << " is part of these totals. Restart with the effects of"
+                << " that run, or start from 0" << exit(FatalError);
         }
         FatalError
             << "    A file of that time is missing or damaged"
