@@ -108,7 +108,7 @@ void Foam::latticeBoltzmannFluid::setFreeSurfaceForces()
         Fx_.cdata(), Fy_.cdata(), Fz_.cdata(),
         dragX_.cdata(), dragY_.cdata(), dragZ_.cdata()
     };
-    freeSurface_->setForces(forces);
+    freeSurface_->setForces(forces, relaxK_.cdata());
 }
 
 

@@ -749,10 +749,34 @@ void Foam::physicsEffects::erosion::readState()
             << " not written there)" << endl;
     }
 
-    // The running totals are per processor, summed when asked for: the
-    // master carries what came before
+    // The running totals are per processor, summed when asked for: each
+    // continues its own where the time was written on this decomposition,
+    // else the master carries what came before
     eroded_ = Pstream::master() ? eroded : scalarList(nS, Zero);
     filtered_ = Pstream::master() ? filtered : scalarList(nS, Zero);
+    bool own = false;
+    scalarList erodedHere, filteredHere;
+    if (totalsWritten && suspensionsRestart && isFile(file))
+    {
+        IFstream is(file);
+        const dictionary state(is);
+        if
+        (
+            state.getOrDefault<label>("nProcessors", -1) == Pstream::nProcs()
+         && state.found("here")
+        )
+        {
+            const dictionary& here = state.subDict("here");
+            erodedHere = here.get<scalarList>("eroded");
+            filteredHere = here.get<scalarList>("filtered");
+            own = erodedHere.size() == nS && filteredHere.size() == nS;
+        }
+    }
+    if (returnReduce(own, andOp<bool>()))
+    {
+        eroded_ = erodedHere;
+        filtered_ = filteredHere;
+    }
     densest_ = densest;
     largest_ = largest;
     if (totalsWritten && suspensionsRestart)
@@ -904,7 +928,13 @@ void Foam::physicsEffects::erosion::write()
         os  << "// Fines [kg] eroded and filtered since erosion started, per"
             << " suspension" << nl
             << "eroded " << eroded << ";" << nl
-            << "filtered " << filtered << ";" << nl;
+            << "filtered " << filtered << ";" << nl
+            // (this processor's own running totals, which a restart on
+            // the same decomposition continues: its sums then repeat the
+            // uninterrupted run's to the last bit)
+            << "nProcessors " << Pstream::nProcs() << ";" << nl
+            << "here { eroded " << eroded_ << "; filtered " << filtered_
+            << "; }" << nl;
         if (law_->surface())
         {
             os  << "densestSolidFraction " << densest_ << ";" << nl
