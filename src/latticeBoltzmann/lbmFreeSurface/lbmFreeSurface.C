@@ -279,7 +279,21 @@ void Foam::lbmFreeSurface::updatePoreDrag()
     // (the liquid nodes' own: an interface node's fed back on itself;
     // with the halo's, as a serial run sees them across a processor's
     // boundary)
-    if (!forces_[0] || !relaxK_)
+    // (only where some node is tight: elsewhere nothing reads it, and a
+    // scene without a tight medium pays a scan of relaxK_ for it)
+    bool tight = false;
+    if (forces_[0] && relaxK_)
+    {
+        for (const label n : lattice_.cellNode())
+        {
+            if (relaxK_[n] > tightShare)
+            {
+                tight = true;
+                break;
+            }
+        }
+    }
+    if (!returnReduce(tight, orOp<bool>()))
     {
         poreDrag_.clear();
         return;
