@@ -241,7 +241,11 @@ def newest_file(folder, file):
     candidates = [os.path.join(folder, f) for f in os.listdir(folder)
                   if f == file or (variant and variant.match(f))]
     candidates = [c for c in candidates if os.path.isfile(c)]
-    return max(candidates, key=os.path.getmtime) if candidates else None
+    # (a variant is written only where the file was there already: at the
+    # same modification time, within a file system's resolution, it wins)
+    return max(candidates, key=lambda c: (os.path.getmtime(c),
+                                          os.path.basename(c) != file)) \
+        if candidates else None
 
 
 def post_processing(case, name, file):

@@ -128,9 +128,13 @@ void Foam::latticeAdvectionDiffusion::readBalance()
     {
         IFstream is(file);
         const dictionary state(is);
+        // (the processor's own file: one copied to every processor, as
+        // decomposePar copies a reconstructed case's uniform/, is not)
         own =
             state.getOrDefault<label>("nProcessors", -1) == Pstream::nProcs()
-         && state.found("here");
+         && state.found("here")
+         && state.subDict("here").getOrDefault<label>("processor", -1)
+         == Pstream::myProcNo();
         if (own)
         {
             here = state.subDict("here");
@@ -243,7 +247,8 @@ void Foam::latticeAdvectionDiffusion::writePopulations() const
         // uninterrupted run's to the last bit: from the global ones, the
         // sums' order differs, 5e-16)
         << "nProcessors " << Pstream::nProcs() << ";" << nl
-        << "here { sourced " << sourced_ << "; deposited " << deposited_
+        << "here { processor " << Pstream::myProcNo() << "; sourced "
+        << sourced_ << "; deposited " << deposited_
         << "; stranded " << stranded_ << "; patchOutflow " << patchOutflow_
         << "; }" << nl;
     os.flush();

@@ -213,6 +213,7 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
     fieldRefreshes_(0),
     progressInterval_(dict_.getOrDefault<scalar>("progressInterval", 10)),
     deltaT_(runTime.deltaTValue()),
+    fixedTimeStep_(false),
     nSteps_(0),
     nStepsTotal_(0),
     projected_(false),
@@ -262,6 +263,11 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
     }
     checkRequirements();
     planSteps();
+    fixedTimeStep_ = false;
+    forAll(effects_, i)
+    {
+        fixedTimeStep_ = fixedTimeStep_ || effects_[i].fixedTimeStep();
+    }
 
     // The state read as written (a processor's missing cloud, say)
     {
@@ -328,7 +334,7 @@ bool Foam::physicsScene::needsSoilWithWater() const
 void Foam::physicsScene::keepDeltaT()
 {
     const scalar dt = runTime_.deltaTValue();
-    if (dt != deltaT_)
+    if (dt != deltaT_ && fixedTimeStep_)
     {
         // (the step taken at the new deltaT while the lattice steps the
         // old one ran the water at twice its labelled time, unsaid)

@@ -18,7 +18,10 @@ import matplotlib
 matplotlib.use('Agg')
 import matplotlib.pyplot as plt
 
-sys.path.insert(0, os.path.join(os.environ['MPMLBM_PROJECT_DIR'], 'tests', 'lib'))
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(
+    os.environ.get('MPMLBM_PROJECT_DIR', os.path.join(here, '..', '..', '..')),
+    'tests', 'lib'))
 import foamio   # noqa: E402  (the project's reader of OpenFOAM's files)
 
 case = sys.argv[1]

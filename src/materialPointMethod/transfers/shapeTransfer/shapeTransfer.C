@@ -49,6 +49,35 @@ inline bool Foam::shapeTransfer<Shape>::hasLoads
 
 
 template<class Shape>
+template<bool Loads>
+inline void Foam::shapeTransfer<Shape>::pointLoads
+(
+    const materialPointSoil& soil,
+    const label p,
+    const vector& g,
+    vector& mg,
+    symmTensor& sigma
+)
+{
+    mg = soil.points_.m[p]*g;
+    sigma = soil.points_.sigma[p];
+    // (a template flag, so that a scene without loads tests nothing per
+    // point)
+    if constexpr (Loads)
+    {
+        if (soil.pointForce_.size())
+        {
+            mg += soil.pointForce_[p];
+        }
+        if (soil.pointStress_.size())
+        {
+            sigma += soil.pointStress_[p];
+        }
+    }
+}
+
+
+template<class Shape>
 template<Foam::label D>
 inline void Foam::shapeTransfer<Shape>::pointWeights
 (
@@ -84,13 +113,8 @@ void Foam::shapeTransfer<Shape>::p2gPoints
     const scalar invDx = 1.0/dx;
     const label sy = soil.lattice_.stride().y();
     const label sz = soil.lattice_.stride().z();
-    // Loads: some points carry a force or a stress of their own (a surface
-    // traction and its moment: see materialPointSoil::addPointTractions);
-    // a template flag, so that a scene without loads tests nothing per point
-    const vector* fExt =
-        soil.pointForce_.size() ? soil.pointForce_.cdata() : nullptr;
-    const symmTensor* sExt =
-        soil.pointStress_.size() ? soil.pointStress_.cdata() : nullptr;
+    // (Loads: some points carry a force or a stress of their own: see
+    // pointLoads)
     const label nBox = soil.gridMass_.size();
 
     // (sized once for 8 values per node, whatever W: MUSL maps with and
@@ -149,13 +173,9 @@ void Foam::shapeTransfer<Shape>::p2gPoints
         vector By(Zero), Bz(Zero);
         if constexpr (Forces)
         {
-            vector mg(mp*g);
-            symmTensor sigma(soil.points_.sigma[p]);
-            if constexpr (Loads)
-            {
-                if (fExt) { mg += fExt[p]; }
-                if (sExt) { sigma += sExt[p]; }
-            }
+            vector mg;
+            symmTensor sigma;
+            pointLoads<Loads>(soil, p, g, mg, sigma);
             const symmTensor Bs(-(soil.points_.V[p]*invDx)*sigma);
             By = vector(Bs.xy(), Bs.yy(), Bs.yz());
             Bz = vector(Bs.xz(), Bs.yz(), Bs.zz());
@@ -277,13 +297,8 @@ void Foam::shapeTransfer<Shape>::p2gForcePoints
     const scalar invDx = 1.0/soil.lattice_.dx();
     const label sy = soil.lattice_.stride().y();
     const label sz = soil.lattice_.stride().z();
-    // Loads: some points carry a force or a stress of their own (a surface
-    // traction and its moment: see materialPointSoil::addPointTractions);
-    // a template flag, so that a scene without loads tests nothing per point
-    const vector* fExt =
-        soil.pointForce_.size() ? soil.pointForce_.cdata() : nullptr;
-    const symmTensor* sExt =
-        soil.pointStress_.size() ? soil.pointStress_.cdata() : nullptr;
+    // (Loads: some points carry a force or a stress of their own: see
+    // pointLoads)
     vector* __restrict__ force = soil.gridForce_.data();
 
     const label nPoints = soil.points_.size();
@@ -294,14 +309,9 @@ void Foam::shapeTransfer<Shape>::p2gForcePoints
         (
             soil, p, soil.latticeCoordinates(soil.points_.x[p]), sw
         );
-        const scalar mp = soil.points_.m[p];
-        vector mg(mp*g);
-        symmTensor sigma(soil.points_.sigma[p]);
-        if constexpr (Loads)
-        {
-            if (fExt) { mg += fExt[p]; }
-            if (sExt) { sigma += sExt[p]; }
-        }
+        vector mg;
+        symmTensor sigma;
+        pointLoads<Loads>(soil, p, g, mg, sigma);
         const symmTensor B(-(soil.points_.V[p]*invDx)*sigma);
         const vector Bx(B.xx(), B.xy(), B.xz());
         const vector By(B.xy(), B.yy(), B.yz());

@@ -301,6 +301,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         phi_.setSize(nBox, Zero);
         wallShear_.setSize(nBox, Zero);
         demand_.setSize(nBox, Zero);
+        handOff_.setSize(nBox, Zero);
         weightSum_.setSize(nBox, Zero);
         emptiedMass_.setSize(nBox, Zero);
         emptiedWeight_.setSize(nBox, Zero);
@@ -760,10 +761,14 @@ void Foam::physicsEffects::erosion::readState()
     {
         IFstream is(file);
         const dictionary state(is);
+        // (the processor's own file: one copied to every processor, as
+        // decomposePar copies a reconstructed case's uniform/, is not)
         if
         (
             state.getOrDefault<label>("nProcessors", -1) == Pstream::nProcs()
          && state.found("here")
+         && state.subDict("here").getOrDefault<label>("processor", -1)
+         == Pstream::myProcNo()
         )
         {
             const dictionary& here = state.subDict("here");
@@ -933,8 +938,8 @@ void Foam::physicsEffects::erosion::write()
             // the same decomposition continues: its sums then repeat the
             // uninterrupted run's to the last bit)
             << "nProcessors " << Pstream::nProcs() << ";" << nl
-            << "here { eroded " << eroded_ << "; filtered " << filtered_
-            << "; }" << nl;
+            << "here { processor " << Pstream::myProcNo() << "; eroded "
+            << eroded_ << "; filtered " << filtered_ << "; }" << nl;
         if (law_->surface())
         {
             os  << "densestSolidFraction " << densest_ << ";" << nl

@@ -164,6 +164,16 @@ void Foam::physicsEffects::erosion::surfaceDemand()
 
     wallShear_ = Zero;
     demand_ = 0;
+    handOff_ = 0;
+    // The mass node k's pore water can still take
+    auto room = [&](const label k)
+    {
+        return
+            (
+                maxConcentration_*max(1 - phi_[k], scalar(0.01))*wetFraction(k)
+              - Phi(k)
+            )*lattice.cellVolume();
+    };
     // (with a free surface: only where there is water; a dry surface is
     // not eroded, and the gas's nodes carry no stress)
     auto wet = [this](const label a)
@@ -302,26 +312,34 @@ void Foam::physicsEffects::erosion::surfaceDemand()
         // neighbour inward, whose points are the soil's surface
         const label giver = phi_[n] > 0 ? n : in;
 
-        // At most what that node's pore water can still carry
+        // At most what that node's pore water can still carry (a demand
+        // handed inward: capped where its node's owner has them all)
         const scalar rate = law_->surfaceRate(mag(tw));
         if (rate > 0)
         {
-            const scalar room =
-                (
-                    maxConcentration_*max(1 - phi_[giver], scalar(0.01))
-                   *wetFraction(giver)
-                  - Phi(giver)
-                )*lattice.cellVolume();
-            demand_[giver] += max
-            (
-                min(rate*columnArea*areaFactor*dt, room - demand_[giver]),
-                scalar(0)
-            );
+            const scalar ask = rate*columnArea*areaFactor*dt;
+            if (giver == n)
+            {
+                demand_[n] = max(min(ask, room(n)), scalar(0));
+            }
+            else
+            {
+                handOff_[giver] += ask;
+            }
         }
     }
 
-    // (a demand handed inward may sit on a halo node: to its owner)
-    halo.addToOwners({haloExchange::field(demand_)});
+    // (a node handed a demand may be a halo node: to its owner, where the
+    // pore water's room is known; a giver is never a surface node, its
+    // solid fraction being at or above the level)
+    halo.addToOwners({haloExchange::field(handOff_)});
+    for (const label k : lattice.cellNode())
+    {
+        if (handOff_[k] > 0)
+        {
+            demand_[k] += max(min(handOff_[k], room(k)), scalar(0));
+        }
+    }
 }
 
 
