@@ -304,11 +304,7 @@ void Foam::lbmFreeSurface::updatePoreDrag()
     {
         if (type_[n] == LIQUID)
         {
-            poreDrag_[n] =
-                (
-                    otherForce(n)
-                  - (staticForce_ ? (*staticForce_)[n] : vector::zero)
-                )/porosity(n);
+            poreDrag_[n] = poreGradient(n);
         }
     }
     lattice_.halo().copyToHalo({haloExchange::field(poreDrag_)});
@@ -570,11 +566,7 @@ Foam::lbmFreeSurface::gasAtSurface Foam::lbmFreeSurface::gasState
         }
         else
         {
-            drag =
-                (
-                    otherForce(x)
-                  - (staticForce_ ? (*staticForce_)[x] : vector::zero)
-                )/eps;
+            drag = poreGradient(x);
         }
         gs.gradP = 3*(g + drag);
     }
