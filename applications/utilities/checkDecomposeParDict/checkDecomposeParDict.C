@@ -41,6 +41,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
+#include "optionalEntry.H"
 #include "Time.H"
 #include "IOdictionary.H"
 #include "polyMesh.H"
@@ -136,7 +137,7 @@ void checkDecomposition(const Time& runTime, const dictionary& dict,
         scalar delta = 0.001;
         if
         (
-            coeffs.readIfPresent("delta", delta)
+            readIfPresentEntry(coeffs, "delta", delta)
          && !(std::isfinite(delta) && delta >= 0 && delta < 1)
         )
         {
@@ -149,7 +150,7 @@ void checkDecomposition(const Time& runTime, const dictionary& dict,
     }
 
     word weightName;
-    if (dict.readIfPresent("weightField", weightName))
+    if (readIfPresentEntry(dict, "weightField", weightName))
     {
         // decomposePar reads it at the start time, in the mesh's region
         const fileName field = runTime.timePath()/regionDir/weightName;

@@ -12,6 +12,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialPointRegion.H"
+#include "selectEntry.H"
+#include "optionalEntry.H"
 #include "mathematicalConstants.H"
 #include "Time.H"
 #include "IOobject.H"
@@ -40,9 +42,9 @@ void Foam::materialPointRegion::readGeostatic
     const dictionary& gd = dict.subDict("geostaticCoeffs");
     surfaceHeight_ = gd.get<scalar>("surface");
     K0_ = gd.get<scalar>("K0");
-    waterRho_ = gd.getOrDefault<scalar>("waterDensity", 0);
+    waterRho_ = optionalEntry<scalar>(gd, "waterDensity", 0);
     // (default: the surface, whose own check follows)
-    waterTable_ = gd.getOrDefault<scalar>("waterTable", surfaceHeight_);
+    waterTable_ = optionalEntry<scalar>(gd, "waterTable", surfaceHeight_);
     if
     (
         gd.found("waterTable")
@@ -100,13 +102,13 @@ void Foam::materialPointRegion::warnBeyondYield
     // only for Ka <= K0 <= Kp, Ka = (1 - sin phi)/(1 + sin phi) = 1/Kp
     // (both horizontal stresses K0 sigma_v): outside, the geostatic stress
     // lies beyond the yield surface and the soil yields at its first step
-    if (materialDict.getOrDefault<word>("model", word::null) != "MohrCoulomb")
+    if (optionalEntry<word>(materialDict, "model", word::null) != "MohrCoulomb")
     {
         return;
     }
-    const dictionary& coeffs = materialDict.optionalSubDict("MohrCoulombCoeffs");
-    const scalar c = coeffs.getOrDefault<scalar>("cohesion", 0);
-    const scalar phi = coeffs.getOrDefault<scalar>("frictionAngle", 0);
+    const dictionary& coeffs = optionalDict(materialDict, "MohrCoulombCoeffs");
+    const scalar c = optionalEntry<scalar>(coeffs, "cohesion", 0);
+    const scalar phi = optionalEntry<scalar>(coeffs, "frictionAngle", 0);
     if (c != 0 || !(phi > 0 && phi < 90))
     {
         return;
@@ -221,8 +223,8 @@ Foam::materialPointRegion::materialPointRegion
             << exit(FatalIOError);
     }
     rho_ = materialsDict.subDict(mat).get<scalar>("rho");
-    velocity_ = dict_.getOrDefault<vector>("velocity", Zero);
-    porosity_ = dict_.getOrDefault<scalar>("porosity", 0);
+    velocity_ = optionalEntry<vector>(dict_, "velocity", Zero);
+    porosity_ = optionalEntry<scalar>(dict_, "porosity", 0);
     if (!(porosity_ >= 0 && porosity_ < 1))
     {
         FatalIOErrorInFunction(dict_)
@@ -230,7 +232,7 @@ Foam::materialPointRegion::materialPointRegion
             << " is not allowed: the void fraction must lie in [0, 1)"
             << exit(FatalIOError);
     }
-    finesContent_ = dict_.getOrDefault<scalar>("finesContent", 0);
+    finesContent_ = optionalEntry<scalar>(dict_, "finesContent", 0);
     if (!(finesContent_ >= 0 && finesContent_ < 1))
     {
         FatalIOErrorInFunction(dict_)
@@ -238,7 +240,7 @@ Foam::materialPointRegion::materialPointRegion
             << " is not allowed: the erodible fines' mass fraction of the"
             << " solid must lie in [0, 1)" << exit(FatalIOError);
     }
-    stress_ = stressTypeNames.getOrDefault("stress", dict_, stressType::none);
+    stress_ = selectEntry(stressTypeNames, "stress", dict_, true, stressType::none);
     if (stress_ == stressType::geostatic)
     {
         readGeostatic(dict_, gravity);
@@ -299,6 +301,8 @@ Foam::PtrList<Foam::materialPointRegion> Foam::materialPointRegion::readList
         // OpenFOAM's surfaces raise errors that name no file (searchableBox:
         // "Illegal bounding box"): each is given the region's
         const dictionary& rd = regionEntries[r].dict();
+        string ioFile;
+        labelPair ioLines(-1, -1);
         const string failure = catchFatal
         (
             [&]()
@@ -316,14 +320,24 @@ Foam::PtrList<Foam::materialPointRegion> Foam::materialPointRegion::readList
                     )
                 );
             },
-            false
+            false,
+            &ioFile,
+            &ioLines
         );
         if (!failure.empty())
         {
-            // (most messages name their region already)
+            // (most messages name their region already); an error in
+            // another file (the region's material in soilProperties) keeps
+            // naming that file and line
             const string prefix("Region " + regionEntries[r].keyword() + ": ");
-            FatalIOErrorInFunction(rd)
-                << (failure.find(prefix) == 0 ? "" : prefix.c_str())
+            const bool elsewhere = !ioFile.empty() && ioFile != rd.name();
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__,
+                elsewhere ? ioFile : string(rd.name()),
+                elsewhere ? ioLines.first() : rd.startLineNumber(),
+                elsewhere ? ioLines.second() : rd.endLineNumber()
+            )   << (failure.find(prefix) == 0 ? "" : prefix.c_str())
                 << failure.c_str() << exit(FatalIOError);
         }
     }

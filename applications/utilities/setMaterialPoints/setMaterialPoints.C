@@ -74,6 +74,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "caseChecks.H"
+#include "optionalEntry.H"
 #include "restartManifest.H"
 #include "IFstream.H"
 #include "fvCFD.H"
@@ -151,13 +152,13 @@ static vector readGravity
     if (mag(gravity) > 0 && pio.typeHeaderOk<IOdictionary>(true))
     {
         const IOdictionary pd(pio);
-        const wordList effects(pd.getOrDefault<wordList>("effects", {}));
+        const wordList effects(optionalEntry<wordList>(pd, "effects", {}));
         bool onSoil = effects.found("gravity");
         if (onSoil && pd.isDict("gravityCoeffs"))
         {
             const dictionary& gc = pd.subDict("gravityCoeffs");
             onSoil =
-                !gc.found("phases")
+                !foundEntry(gc, "phases")
              || gc.get<wordList>("phases").found("soil");
         }
         if (!onSoil)
@@ -422,7 +423,7 @@ static void writeWorkField
     }
     const IOdictionary decompDict(decompIO);
     word fieldName;
-    if (!decompDict.readIfPresent("weightField", fieldName))
+    if (!readIfPresentEntry(decompDict, "weightField", fieldName))
     {
         return;
     }
@@ -430,7 +431,7 @@ static void writeWorkField
     // One point sub-step costs about one node update of the coupled water:
     // the paper's 3D case on one core ran its soil at 5.5 M point updates/s
     // and its water at 5.7 M node updates/s (regularized D3Q19, drag)
-    const scalar pointWork = setDict.getOrDefault<scalar>("pointWork", 1);
+    const scalar pointWork = optionalEntry<scalar>(setDict, "pointWork", 1);
     if (!(pointWork >= 0 && pointWork <= 1e6))
     {
         FatalIOErrorInFunction(setDict)
@@ -452,7 +453,7 @@ static void writeWorkField
         );
     }
     const scalar CFL =
-        runTime.controlDict().getOrDefault<scalar>("soilCFL", 0.5);
+        optionalEntry<scalar>(runTime.controlDict(), "soilCFL", 0.5);
     const scalar deltaT = runTime.deltaTValue();
     const label subSteps =
         (cp > 0 && CFL > 0)

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "latticeBoltzmannFluid.H"
+#include "optionalEntry.H"
 #include "IFstream.H"
 #include "OFstream.H"
 #include "nodeFieldIO.H"
@@ -62,7 +63,7 @@ bool streamsInPlace(const Foam::dictionary& dict)
 {
     const Foam::word streaming
     (
-        dict.getOrDefault<Foam::word>("streaming", "inPlace")
+        Foam::optionalEntry<Foam::word>(dict, "streaming", "inPlace")
     );
     if (streaming != "inPlace" && streaming != "twoLattice")
     {
@@ -106,9 +107,9 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
     collision_(collisionModel::New(dict_, velocitySet_())),
     bodyAcceleration_(Zero),
     latticeAcceleration_(Zero),
-    machLimit_(dict_.getOrDefault<scalar>("machLimit", 0.5)),
-    smagorinsky_(dict_.getOrDefault<scalar>("smagorinskyConstant", 0)),
-    writeStress_(dict_.getOrDefault<bool>("writeViscousStress", false)),
+    machLimit_(optionalEntry<scalar>(dict_, "machLimit", 0.5)),
+    smagorinsky_(optionalEntry<scalar>(dict_, "smagorinskyConstant", 0)),
+    writeStress_(optionalEntry<bool>(dict_, "writeViscousStress", false)),
     U_
     (
         IOobject
@@ -168,7 +169,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
 
     // Gravity and any body force come from constant/g, one way for every
     // phase: the old keyword would be silently ignored
-    if (dict_.found("bodyAcceleration"))
+    if (foundEntry(dict_, "bodyAcceleration"))
     {
         FatalIOErrorInFunction(dict_)
             << "bodyAcceleration is not read from constant/fluidProperties:"
@@ -336,7 +337,7 @@ Foam::latticeBoltzmannFluid::latticeBoltzmannFluid(const latticeMesh& lattice)
         Umax = max(Umax, max(mag(U_.boundaryField()[patchi])));
     }
     reduce(Umax, maxOp<scalar>());
-    const scalar Uref = dict_.getOrDefault<scalar>("Uref", Umax);
+    const scalar Uref = optionalEntry<scalar>(dict_, "Uref", Umax);
     if (dict_.found("Uref") && (!(Uref > 0) || !std::isfinite(Uref)))
     {
         entryNotAllowed

@@ -12,6 +12,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "lbmObstacles.H"
+#include "selectEntry.H"
+#include "optionalEntry.H"
 #include "caseChecks.H"
 #include "Time.H"
 #include "volumeType.H"
@@ -41,7 +43,7 @@ Foam::lbmObstacles::lbmObstacles
     const dictionary* bodiesPtr = fluidDict.findDict("obstacles");
     if (!bodiesPtr)
     {
-        if (fluidDict.found("obstacles"))
+        if (foundEntry(fluidDict, "obstacles"))
         {
             FatalIOErrorInFunction(fluidDict)
                 << "obstacles must be a dictionary of bodies, e.g." << nl
@@ -53,10 +55,12 @@ Foam::lbmObstacles::lbmObstacles
         return;
     }
     const dictionary& bodies = *bodiesPtr;
-    boundary_ = boundaryTypeNames.getOrDefault
+    boundary_ = selectEntry
     (
+        boundaryTypeNames,
         "obstacleBoundary",
         fluidDict,
+        true,
         INTERPOLATED
     );
 

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialPointSoil.H"
+#include "optionalEntry.H"
 #include "restartManifest.H"
 #include "unitConversion.H"
 #include "selectEntry.H"
@@ -341,11 +342,11 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     transfer_(selectEntry(transferTypeNames, "transfer", dict_)),
     flipRatio_
     (
-        dict_.optionalSubDict("FLIPCoeffs").getOrDefault<scalar>("ratio", 0.99)
+        optionalEntry<scalar>(optionalDict(dict_, "FLIPCoeffs"), "ratio", 0.99)
     ),
     flipDamping_
     (
-        dict_.optionalSubDict("FLIPCoeffs").getOrDefault<scalar>("damping", -1)
+        optionalEntry<scalar>(optionalDict(dict_, "FLIPCoeffs"), "damping", -1)
     ),
     update_
     (
@@ -356,8 +357,8 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     ),
     CFL_(readCFL()),
     gravity_(Zero),
-    gravityRamp_(dict_.getOrDefault<scalar>("gravityRamp", 0)),
-    localDamping_(dict_.getOrDefault<scalar>("localDamping", 0)),
+    gravityRamp_(optionalEntry<scalar>(dict_, "gravityRamp", 0)),
+    localDamping_(optionalEntry<scalar>(dict_, "localDamping", 0)),
     time_(mesh_.time().value()),
     haloRoutesSet_(false),
     addedModulus_(0),
@@ -416,7 +417,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
             << "localDamping " << localDamping_ << " is not allowed: it must"
             << " lie in [0, 1)" << exit(FatalIOError);
     }
-    const dictionary& flipDict = dict_.optionalSubDict("FLIPCoeffs");
+    const dictionary& flipDict = optionalDict(dict_, "FLIPCoeffs");
     if (flipDict.found("ratio") && flipDict.found("damping"))
     {
         FatalIOErrorInFunction(flipDict)
@@ -608,7 +609,7 @@ Foam::scalar Foam::materialPointSoil::readCFL() const
     // Read at every outer step, so an edit of a running case's controlDict
     // (runTimeModifiable) takes effect, as maxCo does for OpenFOAM's solvers
     const dictionary& control = mesh_.time().controlDict();
-    const scalar CFL = control.getOrDefault<scalar>("soilCFL", 0.5);
+    const scalar CFL = optionalEntry<scalar>(control, "soilCFL", 0.5);
     if (!(CFL > 0 && CFL <= 1))
     {
         FatalIOErrorInFunction(control)

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "caseChecks.H"
+#include "optionalEntry.H"
 #include "materialPoints.H"
 #include "passiveParticleCloud.H"
 #include "IFstream.H"
@@ -495,7 +496,7 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
                 {
                     IFstream is(props);
                     const dictionary dict(is);
-                    if (dict.getOrDefault<word>("geometry", "positions") == "coordinates")
+                    if (optionalEntry<word>(dict, "geometry", "positions") == "coordinates")
                     {
                         geometry = "coordinates";
                     }

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "latticeForces.H"
+#include "optionalEntry.H"
 #include "mpmLbmFunctionObjectScene.H"
 #include "fluidEffect.H"
 #include "addToRunTimeSelectionTable.H"
@@ -117,10 +118,10 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
     dict_ = dict;
 
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
-    obstacleNames_ = dict.getOrDefault<wordRes>("obstacles", wordRes());
+    obstacleNames_ = optionalEntry<wordRes>(dict, "obstacles", wordRes());
     selectedBodies_.clear();
     bodiesSelected_ = false;
-    if (!dict.found("patches") && obstacleNames_.empty())
+    if (!foundEntry(dict, "patches") && obstacleNames_.empty())
     {
         FatalIOErrorInFunction(dict)
             << "Give the patches, the obstacles or both whose force is"
@@ -131,14 +132,14 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
     (
         dict,
         "patches",
-        dict.getOrDefault<wordRes>("patches", wordRes()),
+        optionalEntry<wordRes>(dict, "patches", wordRes()),
         patches.names()
     );
 
-    CofR_ = dict.getOrDefault<point>("CofR", Zero);
-    pRef_ = dict.getOrDefault<scalar>("pRef", 0);
+    CofR_ = optionalEntry<point>(dict, "CofR", Zero);
+    pRef_ = optionalEntry<scalar>(dict, "pRef", 0);
 
-    coefficients_ = dict.found("magUInf");
+    coefficients_ = foundEntry(dict, "magUInf");
     if (coefficients_)
     {
         auto positive = [&dict](const word& key)
@@ -158,13 +159,13 @@ bool Foam::functionObjects::latticeForces::read(const dictionary& dict)
         magUInf_ = positive("magUInf");
         Aref_ = positive("Aref");
         lRef_ = positive("lRef");
-        rhoInf_ = dict.found("rhoInf") ? positive("rhoInf") : 0;
+        rhoInf_ = foundEntry(dict, "rhoInf") ? positive("rhoInf") : 0;
 
         auto direction = [&dict](const word& key, const vector& deflt)
         {
             // (scaled by its largest component before its magnitude is
             // taken: the square of 1e300 overflows)
-            const vector d = dict.getOrDefault<vector>(key, deflt);
+            const vector d = optionalEntry<vector>(dict, key, deflt);
             const scalar largest = cmptMax(cmptMag(d));
             if
             (

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "latticeWallShearStress.H"
+#include "optionalEntry.H"
 #include "mpmLbmFunctionObjectScene.H"
 #include "fluidEffect.H"
 #include "addToRunTimeSelectionTable.H"
@@ -86,8 +87,8 @@ bool Foam::functionObjects::latticeWallShearStress::read
 {
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
-    patchNames_ = dict.getOrDefault<wordRes>("patches", wordRes());
-    result_ = dict.getOrDefault<word>("result", "wallShearStress");
+    patchNames_ = optionalEntry<wordRes>(dict, "patches", wordRes());
+    result_ = optionalEntry<word>(dict, "result", "wallShearStress");
     selected_.clear();
 
     // (checked now: a name that matches no patch is refused at start-up)

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "materialPointProbes.H"
+#include "optionalEntry.H"
 #include "mpmLbmFunctionObjectScene.H"
 #include "soilEffect.H"
 #include "fluidEffect.H"
@@ -346,7 +347,7 @@ bool Foam::functionObjects::materialPointProbes::read(const dictionary& dict)
     writeFile::read(dict);
     // (constructed without writeFile's own file: one file per field)
     writeToFile_ =
-        Pstream::master() && dict.getOrDefault<bool>("writeToFile", true);
+        Pstream::master() && optionalEntry<bool>(dict, "writeToFile", true);
 
     locations_ = dict.get<List<point>>("probeLocations");
     if (locations_.empty())
@@ -381,7 +382,7 @@ bool Foam::functionObjects::materialPointProbes::read(const dictionary& dict)
         }
     }
 
-    fields_ = dict.getOrDefault<wordList>("fields", fieldNames);
+    fields_ = optionalEntry<wordList>(dict, "fields", fieldNames);
     for (const word& field : fields_)
     {
         if (!fieldNames.found(field))
@@ -393,8 +394,9 @@ bool Foam::functionObjects::materialPointProbes::read(const dictionary& dict)
         }
     }
 
-    nNearest_ = dict.getOrDefault<label>
+    nNearest_ = optionalEntry<label>
     (
+        dict,
         "nearestPoints",
         mesh_.nSolutionD() == 3 ? 8 : 4
     );

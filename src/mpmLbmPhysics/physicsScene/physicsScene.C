@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "physicsScene.H"
+#include "optionalEntry.H"
 #include "caseChecks.H"
 #include "Time.H"
 #include "functionObjectList.H"
@@ -211,7 +212,7 @@ Foam::physicsScene::physicsScene(Time& runTime, fvMesh& mesh)
     writeTime_(0),
     fieldTime_(0),
     fieldRefreshes_(0),
-    progressInterval_(dict_.getOrDefault<scalar>("progressInterval", 10)),
+    progressInterval_(optionalEntry<scalar>(dict_, "progressInterval", 10)),
     deltaT_(runTime.deltaTValue()),
     fixedTimeStep_(false),
     nSteps_(0),
@@ -458,8 +459,8 @@ bool Foam::physicsScene::withinTimeWindow(const dictionary& dict) const
     // functionObjects::timeControl's timeStart and timeEnd
     const scalar t = runTime_.value();
     return
-        t >= dict.getOrDefault<scalar>("timeStart", -GREAT)
-     && t <= dict.getOrDefault<scalar>("timeEnd", GREAT);
+        t >= optionalEntry<scalar>(dict, "timeStart", -GREAT)
+     && t <= optionalEntry<scalar>(dict, "timeEnd", GREAT);
 }
 
 

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "caseChecks.H"
+#include "optionalEntry.H"
 #include "IFstream.H"
 #include "StringStream.H"
 #include "selectEntry.H"
@@ -45,7 +46,7 @@ void Foam::checkFunctionIntervals
         }
         const dictionary& fo = e.dict();
         // (OpenFOAM builds no disabled function object)
-        if (!fo.getOrDefault<bool>("enabled", true))
+        if (!optionalEntry<bool>(fo, "enabled", true))
         {
             continue;
         }
@@ -109,7 +110,7 @@ Foam::dictionary Foam::fileDictionary(const fileName& path)
     {
         // (as IOobject::readHeader sets the stream's format)
         const dictionary header(is);
-        is.format(header.getOrDefault<word>("format", "ascii"));
+        is.format(optionalEntry<word>(header, "format", "ascii"));
     }
     else
     {
@@ -159,8 +160,8 @@ void Foam::checkControlDict(const argList& args)
     {
         const scalar endTime = dict.get<scalar>("endTime");
         const word startFrom =
-            dict.getOrDefault<word>("startFrom", "latestTime");
-        const scalar startTime = dict.getOrDefault<scalar>("startTime", 0);
+            optionalEntry<word>(dict, "startFrom", "latestTime");
+        const scalar startTime = optionalEntry<scalar>(dict, "startTime", 0);
         scalar runStart = startTime;
         if (!std::isfinite(endTime) || endTime < 0)
         {
@@ -170,7 +171,7 @@ void Foam::checkControlDict(const argList& args)
             );
         }
         // As many steps as a run can count (a label), not 1e300 s
-        const scalar deltaT = dict.getOrDefault<scalar>("deltaT", 0);
+        const scalar deltaT = optionalEntry<scalar>(dict, "deltaT", 0);
         if (deltaT > 0 && (endTime - min(startTime, endTime))/deltaT > 1e9)
         {
             entryNotAllowed
@@ -329,9 +330,13 @@ void Foam::restoreRunClock(Time& runTime)
 Foam::string Foam::catchFatal
 (
     const std::function<void()>& work,
-    const bool whole
+    const bool whole,
+    string* ioFile,
+    labelPair* ioLines
 )
 {
+    // ioFile, ioLines: where an IOerror was, for a caller that re-raises
+    // the message with context (left as they were after any other error)
     const bool throwing = FatalError.throwExceptions();
     const bool ioThrowing = FatalIOError.throwExceptions();
     string failure;
@@ -344,6 +349,15 @@ Foam::string Foam::catchFatal
         OStringStream os;
         os << err;
         failure = whole ? os.str() : err.message();
+        if (ioFile && !err.ioFileName().empty())
+        {
+            *ioFile = err.ioFileName();
+            if (ioLines)
+            {
+                *ioLines =
+                    labelPair(err.ioStartLineNumber(), err.ioEndLineNumber());
+            }
+        }
     }
     catch (const Foam::error& err)
     {

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "MRT.H"
+#include "optionalEntry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "DynamicList.H"
 
@@ -135,9 +136,9 @@ Foam::collisionModels::MRT::MRT
 )
 :
     collisionModel(typeName, dict, vs),
-    magic_(coeffs_.getOrDefault<scalar>("magic", 3.0/16.0)),
-    omegaEven_(coeffs_.getOrDefault<scalar>("omegaEven", 1.0)),
-    omegaBulk_(coeffs_.getOrDefault<scalar>("omegaBulk", -1.0))
+    magic_(optionalEntry<scalar>(coeffs_, "magic", 3.0/16.0)),
+    omegaEven_(optionalEntry<scalar>(coeffs_, "omegaEven", 1.0)),
+    omegaBulk_(optionalEntry<scalar>(coeffs_, "omegaBulk", -1.0))
 {
     if (!(magic_ > 0))
     {

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "TRT.H"
+#include "optionalEntry.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -31,7 +32,7 @@ Foam::collisionModels::TRT::TRT
 )
 :
     collisionModel(typeName, dict, vs),
-    magic_(coeffs_.getOrDefault<scalar>("magic", 3.0/16.0))
+    magic_(optionalEntry<scalar>(coeffs_, "magic", 3.0/16.0))
 {
     if (!(magic_ > 0))
     {

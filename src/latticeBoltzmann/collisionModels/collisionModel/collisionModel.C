@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "collisionModel.H"
+#include "optionalEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -32,7 +33,7 @@ Foam::collisionModel::collisionModel
 )
 :
     dict_(dict),
-    coeffs_(dict.optionalSubDict(type + "Coeffs")),
+    coeffs_(optionalDict(dict, type + "Coeffs")),
     velocitySet_(vs)
 {}
 

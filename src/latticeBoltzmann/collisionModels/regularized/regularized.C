@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "regularized.H"
+#include "optionalEntry.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -31,7 +32,7 @@ Foam::collisionModels::regularized::regularized
 )
 :
     collisionModel(typeName, dict, vs),
-    recursive_(coeffs_.getOrDefault<bool>("recursive", false))
+    recursive_(optionalEntry<bool>(coeffs_, "recursive", false))
 {}
 
 

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "DruckerPrager.H"
+#include "selectEntry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "unitConversion.H"
 
@@ -53,7 +54,7 @@ Foam::constitutiveModels::DruckerPrager::DruckerPrager
     psi_(0),
     fit_
     (
-        fitTypeNames.getOrDefault("fit", coeffs_, fitType::planeStrain)
+        selectEntry(fitTypeNames, "fit", coeffs_, true, fitType::planeStrain)
     ),
     eta_(0),
     etaBar_(0),

@@ -18,6 +18,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "MohrCoulomb.H"
+#include "optionalEntry.H"
 #include "addToRunTimeSelectionTable.H"
 #include "unitConversion.H"
 
@@ -69,7 +70,7 @@ Foam::constitutiveModels::MohrCoulomb::MohrCoulomb
 
     // Tension cut-off
     sigmaT_ = sigmaApex_;
-    if (coeffs_.found("tensionCutoff"))
+    if (foundEntry(coeffs_, "tensionCutoff"))
     {
         const scalar sigmaT = coeffs_.get<scalar>("tensionCutoff");
         if (!(sigmaT >= 0))

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "constitutiveModel.H"
+#include "optionalEntry.H"
 #include "unitConversion.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -91,7 +92,7 @@ Foam::constitutiveModel::constitutiveModel
 )
 :
     name_(name),
-    coeffs_(dict.optionalSubDict(type + "Coeffs")),
+    coeffs_(optionalDict(dict, type + "Coeffs")),
     rho_(dict.get<scalar>("rho")),
     E_(dict.get<scalar>("E")),
     nu_(dict.get<scalar>("nu")),

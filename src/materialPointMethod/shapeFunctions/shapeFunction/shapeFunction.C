@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "shapeFunction.H"
+#include "optionalEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -33,7 +34,7 @@ Foam::shapeFunction::shapeFunction
 )
 :
     dict_(dict),
-    coeffs_(dict.optionalSubDict(type + "Coeffs")),
+    coeffs_(optionalDict(dict, type + "Coeffs")),
     support_(support),
     reach_(reach)
 {

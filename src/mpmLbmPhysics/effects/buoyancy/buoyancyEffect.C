@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "buoyancyEffect.H"
+#include "optionalEntry.H"
 #include "lbmFreeSurface.H"
 #include "nodeFieldIO.H"
 #include "caseChecks.H"
@@ -74,10 +75,10 @@ Foam::physicsEffects::buoyancy::buoyancy(physicsScene& scene)
     // where it can: no free surface, g along no periodic direction) the
     // analytic rho_w g.(x - x_top); decided at the first step, when gravity
     // has been set
-    if (scene.dict().found("buoyancyCoeffs"))
+    if (foundEntry(scene.dict(), "buoyancyCoeffs"))
     {
         const dictionary& coeffs = scene.dict().subDict("buoyancyCoeffs");
-        if (coeffs.found("hydrostatic"))
+        if (foundEntry(coeffs, "hydrostatic"))
         {
             enum class mode { analytic, lattice };
             const Enum<mode> modeNames

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dragEffect.H"
+#include "optionalEntry.H"
 #include "lbmFreeSurface.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
@@ -54,7 +55,7 @@ Foam::dictionary dragDict
 {
     Foam::dictionary d(coupling);
     d.set("rhoFluid", fluid.units().rho0());
-    if (!d.found("muFluid"))
+    if (!foundEntry(d, "muFluid"))
     {
         d.add("muFluid", fluid.units().rho0()*fluid.units().nu());
     }
@@ -111,7 +112,7 @@ Foam::physicsEffects::drag::drag(physicsScene& scene)
         // in its sub-steps
         fluid_.enableGivenDrag();
         soil_.mpm().setGridExchange(*this);
-        if (dict_.getOrDefault<bool>("writeMomentum", false))
+        if (optionalEntry<bool>(dict_, "writeMomentum", false))
         {
             wordList columns;
             for (const char* phase : {"water", "soil", "total"})

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "erosionEffect.H"
+#include "optionalEntry.H"
 #include "freeSurfaceEffect.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
@@ -134,7 +135,7 @@ scalarList finesLimits(const fvMesh& mesh, const materialPointSoil& soil)
     {
         const dictionary& matDict =
             materials.subDict(soil.materials()[mati].name());
-        limits[mati] = matDict.getOrDefault<scalar>("finesLimit", 0);
+        limits[mati] = optionalEntry<scalar>(matDict, "finesLimit", 0);
         if (!(limits[mati] >= 0 && limits[mati] < 1))
         {
             FatalIOErrorInFunction(matDict)
@@ -174,7 +175,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
     finesLimit_(finesLimits(scene.mesh(), soil_.mpm())),
     maxConcentration_
     (
-        dict_.getOrDefault<scalar>("maxConcentration", 0.6*law_->rhoSolid())
+        optionalEntry<scalar>(dict_, "maxConcentration", 0.6*law_->rhoSolid())
     ),
     materialSuspension_(soil_.mpm().materials().size(), 0),
     uPhysical_(fluid_.lattice().nBox(), Zero),
@@ -204,8 +205,8 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
 
     // The suspensions: one, or one per material (its field
     // <field>.<material>)
-    const word field(dict_.getOrDefault<word>("field", "fines"));
-    if (dict_.getOrDefault<bool>("suspensionPerMaterial", false))
+    const word field(optionalEntry<word>(dict_, "field", "fines"));
+    if (optionalEntry<bool>(dict_, "suspensionPerMaterial", false))
     {
         const auto& materials = soil_.mpm().materials();
         suspensions_.setSize(materials.size());
@@ -265,7 +266,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
             reduce(largest_, maxOp<scalar>());
         }
         surfaceSolidFraction_ =
-            dict_.getOrDefault<scalar>("surfaceSolidFraction", 0.5*densest_);
+            optionalEntry<scalar>(dict_, "surfaceSolidFraction", 0.5*densest_);
         if (!(surfaceSolidFraction_ > 0) || !(surfaceSolidFraction_ < 1))
         {
             FatalIOErrorInFunction(dict_)
@@ -285,7 +286,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
                 << " half of it, " << 0.5*densest_ << exit(FatalIOError);
         }
         minVolumeFraction_ =
-            dict_.getOrDefault<scalar>("minVolumeFraction", 1e-3);
+            optionalEntry<scalar>(dict_, "minVolumeFraction", 1e-3);
         if (!(minVolumeFraction_ >= 0 && minVolumeFraction_ < 1))
         {
             FatalIOErrorInFunction(dict_)
@@ -349,7 +350,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
         catchDemand_.setSize(fluid_.lattice().nBox(), Zero);
     }
 
-    if (dict_.getOrDefault<bool>("mixtureDensity", false))
+    if (optionalEntry<bool>(dict_, "mixtureDensity", false))
     {
         if (!scene.has("buoyancy"))
         {
@@ -367,7 +368,7 @@ Foam::physicsEffects::erosion::erosion(physicsScene& scene)
             .addWaterForce(mixtureForce_);
     }
 
-    if (dict_.getOrDefault<bool>("writeBalance", true))
+    if (optionalEntry<bool>(dict_, "writeBalance", true))
     {
         // Per material (one suspension each), then the totals
         wordList columns;

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "freeSurfaceEffect.H"
+#include "optionalEntry.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
 #include "porousFlowEffect.H"
@@ -37,7 +38,7 @@ namespace physicsEffects
 Foam::label Foam::physicsEffects::freeSurface::haloWidth(const fvMesh& mesh)
 {
     const IOdictionary dict(dictIO(mesh));
-    return (dict.getOrDefault<scalar>("surfaceTension", 0) > 0 ? 2 : 1);
+    return (optionalEntry<scalar>(dict, "surfaceTension", 0) > 0 ? 2 : 1);
 }
 
 
@@ -141,10 +142,10 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
     // exchanges mass with it as with a neighbour (the gas's population
     // where that node is gas: lbmFreeSurface::slipLinks)
 
-    const scalar gasPressure = dict_.getOrDefault<scalar>("gasPressure", 0);
-    const scalar fillMargin = dict_.getOrDefault<scalar>("fillMargin", 1e-3);
+    const scalar gasPressure = optionalEntry<scalar>(dict_, "gasPressure", 0);
+    const scalar fillMargin = optionalEntry<scalar>(dict_, "fillMargin", 1e-3);
     const scalar surfaceTension =
-        dict_.getOrDefault<scalar>("surfaceTension", 0);
+        optionalEntry<scalar>(dict_, "surfaceTension", 0);
     if (!(surfaceTension >= 0 && surfaceTension < GREAT))
     {
         FatalIOErrorInFunction(dict_)
@@ -250,7 +251,7 @@ Foam::string Foam::physicsEffects::freeSurface::plan() const
     return
         "mass exchange, gas populations and cell conversion at every"
         " lattice step (gas pressure "
-      + Foam::name(dict_.getOrDefault<scalar>("gasPressure", 0)) + " Pa)";
+      + Foam::name(optionalEntry<scalar>(dict_, "gasPressure", 0)) + " Pa)";
 }
 
 

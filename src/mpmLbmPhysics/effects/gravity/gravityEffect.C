@@ -13,6 +13,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "caseChecks.H"
+#include "optionalEntry.H"
 #include "IFstream.H"
 #include "gravityEffect.H"
 #include "physicsScene.H"
@@ -70,7 +71,7 @@ Foam::physicsEffects::gravity::gravity(physicsScene& scene)
     // The phases that feel it: all those in the scene unless listed
     const dictionary& dict = scene.dict();
     const wordList allowed({"fluid", "soil"});
-    if (dict.found("gravityCoeffs"))
+    if (foundEntry(dict, "gravityCoeffs"))
     {
         const dictionary& coeffs = dict.subDict("gravityCoeffs");
         // (OpenFOAM's list error names a stream, not the file: given here)

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "porousFlowEffect.H"
+#include "optionalEntry.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
 #include "soilEffect.H"
@@ -81,7 +82,7 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
         const dictionary& coeffs = dict_.subDict("fixedCoeffs");
         porosity_ = coeffs.get<scalar>("porosity");
         permeability_ = coeffs.get<scalar>("permeability");
-        forchheimer_ = coeffs.getOrDefault<scalar>("Forchheimer", 0);
+        forchheimer_ = optionalEntry<scalar>(coeffs, "Forchheimer", 0);
         if (!(porosity_ > 0 && porosity_ <= 1))
         {
             FatalIOErrorInFunction(coeffs)
@@ -101,7 +102,7 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
                 << " must be >= 0" << exit(FatalIOError);
         }
         const latticeMesh& lattice = fluid_.lattice();
-        zoned_ = coeffs.found("cellZone");
+        zoned_ = foundEntry(coeffs, "cellZone");
         if (zoned_)
         {
             const word zoneName(coeffs.get<word>("cellZone"));
@@ -157,7 +158,7 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
         const scalarList nMin(minPorosities(soil_->mpm()));
         checkPorous(soil_->mpm(), nMin);
         const bool displacement =
-            dict_.getOrDefault<Switch>("displacement", false);
+            optionalEntry<Switch>(dict_, "displacement", false);
         if (displacement)
         {
             fluid_.enableDisplacement();

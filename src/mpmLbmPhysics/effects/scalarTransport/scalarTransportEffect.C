@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "scalarTransportEffect.H"
+#include "optionalEntry.H"
 #include "freeSurfaceEffect.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
@@ -56,7 +57,7 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
     (
         fluid_.lattice(),
         fluid_.units(),
-        dict_.getOrDefault<word>("field", "C"),
+        optionalEntry<word>(dict_, "field", "C"),
         dict_,
         fluid_.boundaries(),
         fluid_.U(),
@@ -75,13 +76,13 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
             (
                 dict_,
                 fluid_.units().rho0(),
-                dict_.getOrDefault<scalar>("nuFluid", fluid_.units().nu()),
+                optionalEntry<scalar>(dict_, "nuFluid", fluid_.units().nu()),
                 transport_
             )
         );
     }
 
-    if (dict_.getOrDefault<bool>("writeBalance", false))
+    if (optionalEntry<bool>(dict_, "writeBalance", false))
     {
         wordList columns({"content", "sourced"});
         // (the processor patches aside: nothing crosses them)

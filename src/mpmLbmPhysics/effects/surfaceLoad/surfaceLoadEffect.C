@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "surfaceLoadEffect.H"
+#include "optionalEntry.H"
 #include "physicsScene.H"
 #include "soilEffect.H"
 #include "caseChecks.H"
@@ -98,7 +99,7 @@ Foam::physicsEffects::surfaceLoad::surfaceLoad(physicsScene& scene)
         }
 
         // Along an axis: the box's area across it is then exact
-        r->direction = d.getOrDefault<vector>("direction", vector(0, -1, 0));
+        r->direction = optionalEntry<vector>(d, "direction", vector(0, -1, 0));
         checkInPlane(twoD, r->direction, "direction", d);
         direction axis = 0;
         label nAxes = 0;

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dragModel.H"
+#include "optionalEntry.H"
 #include "selectEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -33,7 +34,7 @@ Foam::scalar Foam::dragModel::readPositiveCoeff
     const scalar deflt
 ) const
 {
-    const scalar value = coeffs_.getOrDefault<scalar>(keyword, deflt);
+    const scalar value = optionalEntry<scalar>(coeffs_, keyword, deflt);
 
     // Written so that NaN fails
     if (!(value > 0))
@@ -52,7 +53,7 @@ Foam::scalar Foam::dragModel::readPositiveCoeff
 
 Foam::dragModel::dragModel(const word& type, const dictionary& dict)
 :
-    coeffs_(dict.optionalSubDict(type + "Coeffs")),
+    coeffs_(optionalDict(dict, type + "Coeffs")),
     d_(dict.get<scalar>("d")),
     rhoFluid_(dict.get<scalar>("rhoFluid")),
     muFluid_(dict.get<scalar>("muFluid"))

@@ -12,6 +12,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "Shields.H"
+#include "optionalEntry.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -58,7 +59,7 @@ Foam::erosionLaws::Shields::Shields(const dictionary& dict)
     excessShearStress(typeName, dict, false),
     d_(readCoeff("d", true, "[m] (the grain diameter)")),
     thetaC_(0),
-    given_(coeffs_.found("thetaC"))
+    given_(foundEntry(coeffs_, "thetaC"))
 {
     const scalar s = rhoSolid_/rhoFluid_;
     thetaC_ =

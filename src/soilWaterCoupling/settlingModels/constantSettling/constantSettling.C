@@ -13,6 +13,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "constantSettling.H"
+#include "optionalEntry.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -39,7 +40,7 @@ Foam::settlingModels::constantSettling::constantSettling
     setVelocity
     (
         readPositive("ws", "[m/s] (the terminal velocity)"),
-        coeffs_.found("d") ? readPositive("d", "[m] (the grain diameter)") : 0
+        foundEntry(coeffs_, "d") ? readPositive("d", "[m] (the grain diameter)") : 0
     );
 }
 

@@ -13,6 +13,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "settlingModel.H"
+#include "optionalEntry.H"
 #include "selectEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -65,12 +66,12 @@ void Foam::settlingModel::setVelocity(const scalar ws, const scalar d)
 
 Foam::settlingModel::settlingModel(const word& type, const dictionary& dict)
 :
-    coeffs_(dict.optionalSubDict(type + "Coeffs")),
+    coeffs_(optionalDict(dict, type + "Coeffs")),
     rhoFluid_(dict.get<scalar>("rhoFluid")),
     nuFluid_(dict.get<scalar>("nuFluid")),
     rhoSolid_(dict.get<scalar>("rhoSolid")),
     g_(dict.get<scalar>("g")),
-    hindered_(coeffs_.getOrDefault<bool>("hindered", true)),
+    hindered_(optionalEntry<bool>(coeffs_, "hindered", true)),
     d_(0),
     ws_(0),
     n_(4.7)
