@@ -330,7 +330,12 @@ Foam::PtrList<Foam::materialPointRegion> Foam::materialPointRegion::readList
             // another file (the region's material in soilProperties) keeps
             // naming that file and line
             const string prefix("Region " + regionEntries[r].keyword() + ": ");
-            const bool elsewhere = !ioFile.empty() && ioFile != rd.name();
+            // (an entry's own error names it by its scope alone,
+            // block.porosity: that is the region's file)
+            const fileName& regionFile = rd.topDict().name();
+            const bool elsewhere =
+                !ioFile.empty() && ioFile[0] == '/'
+             && ioFile.compare(0, regionFile.size(), regionFile) != 0;
             FatalIOError
             (
                 FUNCTION_NAME, __FILE__, __LINE__,

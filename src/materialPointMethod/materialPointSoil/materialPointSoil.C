@@ -564,8 +564,6 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     {
         Info<< "  ";
         materials_[i].report(Info);
-        Info<< "        p-wave speed " << materials_[i].pWaveSpeed()
-            << " m/s" << nl;
     }
     Info<< "    stable time step " << stableDt() << " s (CFL " << CFL_
         << "); controlDict deltaT " << mesh_.time().deltaTValue() << " s"

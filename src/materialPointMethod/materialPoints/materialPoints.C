@@ -12,7 +12,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "caseChecks.H"
-#include "optionalEntry.H"
 #include "materialPoints.H"
 #include "passiveParticleCloud.H"
 #include "IFstream.H"
@@ -496,7 +495,7 @@ bool Foam::materialPoints::read(const fvMesh& mesh, const word& timeName)
                 {
                     IFstream is(props);
                     const dictionary dict(is);
-                    if (optionalEntry<word>(dict, "geometry", "positions") == "coordinates")
+                    if (dict.getOrDefault<word>("geometry", "positions") == "coordinates")
                     {
                         geometry = "coordinates";
                     }

@@ -80,14 +80,19 @@ bool Foam::nearlySpelt(const word& written, const word& read)
 }
 
 
-Foam::word Foam::nearKeyword(const dictionary& dict, const word& key)
+Foam::word Foam::nearKeyword
+(
+    const dictionary& dict,
+    const word& key,
+    const wordList& siblings
+)
 {
     word nearest;
     label best = labelMax;
     for (const entry& e : dict)
     {
         const word& k = e.keyword();
-        if (nearlySpelt(k, key))
+        if (nearlySpelt(k, key) && !siblings.found(k))
         {
             const label dist = keywordDistance(k, key);
             if (dist < best)
@@ -105,10 +110,11 @@ void Foam::checkSpelling
 (
     const dictionary& dict,
     const word& key,
-    const string& whatIfAbsent
+    const string& whatIfAbsent,
+    const wordList& siblings
 )
 {
-    const word written(nearKeyword(dict, key));
+    const word written(nearKeyword(dict, key, siblings));
     if (written.empty())
     {
         return;
@@ -144,14 +150,18 @@ bool Foam::foundEntry(const dictionary& dict, const word& key)
 const Foam::dictionary& Foam::optionalDict
 (
     const dictionary& dict,
-    const word& name
+    const word& name,
+    const wordList& siblings
 )
 {
     if (dict.isDict(name))
     {
         return dict.subDict(name);
     }
-    checkSpelling(dict, name, "its entries then read from " + dict.dictName());
+    checkSpelling
+    (
+        dict, name, "its entries then read from " + dict.dictName(), siblings
+    );
     return dict;
 }
 

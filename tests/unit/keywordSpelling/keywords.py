@@ -3,9 +3,12 @@
 
 optional: keywords read with optionalEntry, readIfPresentEntry, foundEntry,
 optionalDict or an optional selectEntry (absent, their dictionary is
-searched for a near spelling, which is refused); read: every identifier
-given to a dictionary lookup, coefficient helper or TypeName (the model's
-<Type>Coeffs). Shared with the test's check of no two being near.
+searched for a near spelling, which is refused), and every model's
+<Type>Coeffs (its TypeName: the families' bases read them with
+optionalDict, the other models' of the family passed as siblings, which
+are never taken for a misspelling); read: every identifier given to a
+dictionary lookup, coefficient helper or TypeName. Shared with the test's
+check of no two being near.
 """
 import os
 import re
@@ -31,8 +34,9 @@ def source_files(root):
 
 
 def keywords(root):
-    """(optional, read): dicts keyword -> set of 'file:line' it is read at"""
-    optional, read = {}, {}
+    """(optional, read, coeffs): dicts keyword -> set of 'file:line' it is
+    read at; coeffs: the models' <Type>Coeffs"""
+    optional, read, coeffs = {}, {}, set()
     for path in source_files(root):
         text = open(path, errors='replace').read()
         # Comments (a Description's example) are not reads; their lines
@@ -49,15 +53,17 @@ def keywords(root):
             if not lit:
                 continue
             key = lit.group(1)
-            if name in ('TypeName', 'defineTypeNameAndDebug'):
+            model = name in ('TypeName', 'defineTypeNameAndDebug')
+            if model:
                 key += 'Coeffs'
+                coeffs.add(key)
             where = '%s:%d' % (rel, text.count('\n', 0, m.start()) + 1)
             read.setdefault(key, set()).add(where)
             optional_select = name == 'selectEntry' and re.search(
                 r',\s*true\s*,', args)
-            if name in OPTIONAL or optional_select:
+            if name in OPTIONAL or optional_select or model:
                 optional.setdefault(key, set()).add(where)
-    return optional, read
+    return optional, read, coeffs
 
 
 def distance(a, b):

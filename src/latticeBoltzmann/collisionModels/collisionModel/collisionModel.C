@@ -33,7 +33,13 @@ Foam::collisionModel::collisionModel
 )
 :
     dict_(dict),
-    coeffs_(optionalDict(dict, type + "Coeffs")),
+    coeffs_
+    (
+        optionalDict
+        (
+            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
+        )
+    ),
     velocitySet_(vs)
 {}
 

@@ -92,7 +92,13 @@ Foam::constitutiveModel::constitutiveModel
 )
 :
     name_(name),
-    coeffs_(optionalDict(dict, type + "Coeffs")),
+    coeffs_
+    (
+        optionalDict
+        (
+            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
+        )
+    ),
     rho_(dict.get<scalar>("rho")),
     E_(dict.get<scalar>("E")),
     nu_(dict.get<scalar>("nu")),

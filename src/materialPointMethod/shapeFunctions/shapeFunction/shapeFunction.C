@@ -34,7 +34,13 @@ Foam::shapeFunction::shapeFunction
 )
 :
     dict_(dict),
-    coeffs_(optionalDict(dict, type + "Coeffs")),
+    coeffs_
+    (
+        optionalDict
+        (
+            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
+        )
+    ),
     support_(support),
     reach_(reach)
 {

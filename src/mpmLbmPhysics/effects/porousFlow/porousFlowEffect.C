@@ -16,6 +16,7 @@ License
 #include "physicsScene.H"
 #include "fluidEffect.H"
 #include "soilEffect.H"
+#include "dragEffect.H"
 #include "materialPointSoil.H"
 #include "dragRelaxation.H"
 #include "selectEntry.H"
@@ -138,15 +139,16 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
                 << " the lattice carries its resistance, the porosity is"
                 << " its storage)";
         }
-        else
-        {
-            fluid_.setPorosity(scalarList(lattice.nBox(), porosity_));
-        }
         const scalar H = lattice.dx();
         Info<< ", porosity " << porosity_ << ", permeability "
             << permeability_ << " m2 (Darcy number K/dx^2 "
             << permeability_/sqr(H) << "), Forchheimer " << forchheimer_
             << nl;
+        if (!zoned_)
+        {
+            // (after the line above: setPorosity logs its own)
+            fluid_.setPorosity(scalarList(lattice.nBox(), porosity_));
+        }
         setResistance();
     }
     else
@@ -218,10 +220,96 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
             << " does not move): remove the keyword" << exit(FatalIOError);
     }
     Info<< nl << endl;
+    if (medium_ == mediumType::soil)
+    {
+        reportBrinkmanLayer(scene);
+    }
 }
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::physicsEffects::porousFlow::reportBrinkmanLayer
+(
+    physicsScene& scene
+) const
+{
+    // The lattice's viscous term in the pores is Brinkman's: at a no-slip
+    // wall (and where the soil meets clear water) the superficial velocity
+    // goes from Darcy's to the wall's across
+    // delta = sqrt(nu K/(n nu_w)) (Guo & Zhao's nu_e = nu; Darcy's
+    // resistance with the water's nu_w = mu/rho of the drag). A lattice
+    // viscosity raised for stability widens it by sqrt(nu/nu_w): a new
+    // user's probe (2026-12-07, nu 1.6 m2/s, K 1e-11 m2) had delta 6.3 mm
+    // and a column's discharge 29% below Darcy's between no-slip walls,
+    // unsaid (slip walls: exact)
+    const dragModel& drag =
+        scene.effect<physicsEffects::drag>("drag").model();
+    const scalar nuWater = drag.muFluid()/drag.rhoFluid();
+    const scalar nu = fluid_.units().nu();
+    const scalar dx = fluid_.lattice().dx();
+    const materialPointSoil& mpm = soil_->mpm();
+    const materialPoints& points = mpm.points();
+    scalarList nMax(mpm.materials().size(), -GREAT);
+    forAll(points.porosity, p)
+    {
+        const label m = points.material[p];
+        nMax[m] = max(nMax[m], points.porosity[p]);
+    }
+    Pstream::listCombineGather(nMax, maxEqOp<scalar>());
+    Pstream::listCombineScatter(nMax);
+
+    Info<< "Porous flow: the Brinkman layer at no-slip walls and the soil's"
+        << " faces, sqrt(nu K/(n nu_w)) at each material's loosest:";
+    scalar widest = 0;
+    forAll(nMax, m)
+    {
+        if (!(nMax[m] > 0 && nMax[m] <= 1))
+        {
+            continue;
+        }
+        const scalar K = drag.permeability(1 - nMax[m]);
+        if (!(K < VGREAT))
+        {
+            continue;
+        }
+        const scalar delta = std::sqrt(nu*K/(nMax[m]*nuWater));
+        widest = max(widest, delta);
+        char figures[96];
+        std::snprintf
+        (
+            figures, sizeof(figures), " %.3g m (%.2g cells)", delta, delta/dx
+        );
+        Info<< " " << mpm.materials()[m].name() << figures;
+    }
+    Info<< nl << endl;
+    bool walls = false;
+    for (const auto kind : fluid_.boundaries().patchKinds())
+    {
+        walls = walls
+         || kind == lbmBoundaries::WALL || kind == lbmBoundaries::MOVINGWALL;
+    }
+    reduce(walls, orOp<bool>());
+    if (walls && nu > 1.5*nuWater && widest > 0.5*dx)
+    {
+        char figures[200];
+        std::snprintf
+        (
+            figures, sizeof(figures),
+            "the lattice's viscosity nu %.3g m2/s is %.3g times the"
+            " water's (%.3g, the drag's muFluid/rhoFluid), which widens the"
+            " Brinkman layer to %.3g m (%.2g cells)",
+            nu, nu/nuWater, nuWater, widest, widest/dx
+        );
+        WarningInFunction
+            << figures << ": the seepage discharge between the no-slip"
+            << " walls, a width W apart, falls by about 2 delta/W (a new"
+            << " user's column: 29%)." << nl
+            << "    Make the walls beside seepage slip, or lower nu (tau"
+            << " nearer 1/2, or a smaller deltaT)" << endl;
+    }
+}
+
 
 Foam::scalarList Foam::physicsEffects::porousFlow::minPorosities
 (

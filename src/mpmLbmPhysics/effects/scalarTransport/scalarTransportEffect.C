@@ -69,7 +69,16 @@ Foam::physicsEffects::scalarTransport::scalarTransport(physicsScene& scene)
     if (suspensionSettling::selected(dict_))
     {
         // (the water's own viscosity unless nuFluid says otherwise: the
-        // lattice's may be raised for stability)
+        // lattice's may be raised for stability, and a Stokes velocity
+        // falls with it: a new user's probe, 2026-12-07, raised nu to
+        // 1e-5 and settled ten times slower, unsaid)
+        if (!foundEntry(dict_, "nuFluid"))
+        {
+            Info<< "Settling with the lattice's viscosity nu "
+                << fluid_.units().nu() << " m2/s (constant/fluidProperties):"
+                << " where nu was raised for stability, give the water's"
+                << " as nuFluid in constant/scalarTransportProperties" << nl;
+        }
         settling_.reset
         (
             new suspensionSettling

@@ -53,7 +53,13 @@ Foam::scalar Foam::dragModel::readPositiveCoeff
 
 Foam::dragModel::dragModel(const word& type, const dictionary& dict)
 :
-    coeffs_(optionalDict(dict, type + "Coeffs")),
+    coeffs_
+    (
+        optionalDict
+        (
+            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
+        )
+    ),
     d_(dict.get<scalar>("d")),
     rhoFluid_(dict.get<scalar>("rhoFluid")),
     muFluid_(dict.get<scalar>("muFluid"))

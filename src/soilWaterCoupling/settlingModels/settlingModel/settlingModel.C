@@ -66,7 +66,13 @@ void Foam::settlingModel::setVelocity(const scalar ws, const scalar d)
 
 Foam::settlingModel::settlingModel(const word& type, const dictionary& dict)
 :
-    coeffs_(optionalDict(dict, type + "Coeffs")),
+    coeffs_
+    (
+        optionalDict
+        (
+            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
+        )
+    ),
     rhoFluid_(dict.get<scalar>("rhoFluid")),
     nuFluid_(dict.get<scalar>("nuFluid")),
     rhoSolid_(dict.get<scalar>("rhoSolid")),
@@ -113,6 +119,7 @@ void Foam::settlingModel::report(Ostream& os) const
     {
         os  << ", d " << d_ << " m (Re_p " << ws_*d_/nuFluid_ << ")";
     }
+    os  << ", water's viscosity nu " << nuFluid_ << " m2/s";
     if (hindered_)
     {
         os  << ", hindered (1 - phi)^" << n_ << " (Richardson-Zaki, Rowe"
