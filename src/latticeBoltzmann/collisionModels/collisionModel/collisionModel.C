@@ -33,13 +33,7 @@ Foam::collisionModel::collisionModel
 )
 :
     dict_(dict),
-    coeffs_
-    (
-        optionalDict
-        (
-            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
-        )
-    ),
+    coeffs_(modelCoeffsDict(dict, type, dictionaryConstructorTablePtr_)),
     velocitySet_(vs)
 {}
 

@@ -92,13 +92,7 @@ Foam::constitutiveModel::constitutiveModel
 )
 :
     name_(name),
-    coeffs_
-    (
-        optionalDict
-        (
-            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
-        )
-    ),
+    coeffs_(modelCoeffsDict(dict, type, dictionaryConstructorTablePtr_)),
     rho_(dict.get<scalar>("rho")),
     E_(dict.get<scalar>("E")),
     nu_(dict.get<scalar>("nu")),

@@ -34,13 +34,7 @@ Foam::shapeFunction::shapeFunction
 )
 :
     dict_(dict),
-    coeffs_
-    (
-        optionalDict
-        (
-            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
-        )
-    ),
+    coeffs_(modelCoeffsDict(dict, type, dictionaryConstructorTablePtr_)),
     support_(support),
     reach_(reach)
 {

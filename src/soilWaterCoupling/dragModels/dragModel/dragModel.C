@@ -53,13 +53,7 @@ Foam::scalar Foam::dragModel::readPositiveCoeff
 
 Foam::dragModel::dragModel(const word& type, const dictionary& dict)
 :
-    coeffs_
-    (
-        optionalDict
-        (
-            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
-        )
-    ),
+    coeffs_(modelCoeffsDict(dict, type, dictionaryConstructorTablePtr_)),
     d_(dict.get<scalar>("d")),
     rhoFluid_(dict.get<scalar>("rhoFluid")),
     muFluid_(dict.get<scalar>("muFluid"))

@@ -66,13 +66,7 @@ void Foam::settlingModel::setVelocity(const scalar ws, const scalar d)
 
 Foam::settlingModel::settlingModel(const word& type, const dictionary& dict)
 :
-    coeffs_
-    (
-        optionalDict
-        (
-            dict, type + "Coeffs", coeffsNames(dictionaryConstructorTablePtr_)
-        )
-    ),
+    coeffs_(modelCoeffsDict(dict, type, dictionaryConstructorTablePtr_)),
     rhoFluid_(dict.get<scalar>("rhoFluid")),
     nuFluid_(dict.get<scalar>("nuFluid")),
     rhoSolid_(dict.get<scalar>("rhoSolid")),
