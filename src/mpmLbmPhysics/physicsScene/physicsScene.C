@@ -456,11 +456,13 @@ bool Foam::physicsScene::controlFires(const Foam::timeControl& control) const
 
 bool Foam::physicsScene::withinTimeWindow(const dictionary& dict) const
 {
-    // functionObjects::timeControl's timeStart and timeEnd
+    // functionObjects::timeControl's timeStart and timeEnd (OpenFOAM's
+    // keywords, read here every step: no spelling check, which OpenFOAM
+    // does not make either)
     const scalar t = runTime_.value();
     return
-        t >= optionalEntry<scalar>(dict, "timeStart", -GREAT)
-     && t <= optionalEntry<scalar>(dict, "timeEnd", GREAT);
+        t >= dict.getOrDefault<scalar>("timeStart", -GREAT)
+     && t <= dict.getOrDefault<scalar>("timeEnd", GREAT);
 }
 
 
