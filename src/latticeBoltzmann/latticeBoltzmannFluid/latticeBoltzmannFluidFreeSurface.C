@@ -23,7 +23,8 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
     const scalar gasPressure,
     const scalar fillMargin,
     const scalar surfaceTension,
-    const scalarField& alpha
+    const scalarField& alpha,
+    const label excessMassTo
 )
 {
     // (the storage the free surface reads: a porous zone's, or the
@@ -38,7 +39,7 @@ void Foam::latticeBoltzmannFluid::enableFreeSurface
         (
             lattice_, velocitySet_(), units_, obstacles_(), porosity_,
             storage_,
-            gasPressure, fillMargin, surfaceTension
+            gasPressure, fillMargin, surfaceTension, excessMassTo
         )
     );
     // (where the populations are: read through the fluid's layout)

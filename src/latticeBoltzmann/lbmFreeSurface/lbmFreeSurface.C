@@ -120,7 +120,8 @@ Foam::lbmFreeSurface::lbmFreeSurface
     const scalarList& storage,
     const scalar gasPressure,
     const scalar fillMargin,
-    const scalar surfaceTension
+    const scalar surfaceTension,
+    const label excessMassTo
 )
 :
     lattice_(lattice),
@@ -134,6 +135,7 @@ Foam::lbmFreeSurface::lbmFreeSurface
     hydrostatic_(nullptr),
     hydrostaticG_(Zero),
     fillMargin_(fillMargin),
+    excessMassTo_(excessMassTo),
     sigmaRho_
     (
         units.rhoLattice(surfaceTension/lattice.dx()) - units.rhoLattice(0)

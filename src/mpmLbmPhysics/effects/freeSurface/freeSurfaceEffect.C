@@ -146,6 +146,21 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
     const scalar fillMargin = optionalEntry<scalar>(dict_, "fillMargin", 1e-3);
     const scalar surfaceTension =
         optionalEntry<scalar>(dict_, "surfaceTension", 0);
+    // The conversions' excess mass (lbmFreeSurface::excessMassRule)
+    const word excessMassTo =
+        optionalEntry<word>(dict_, "excessMassTo", "allInterface");
+    const wordList excessRules({"allInterface", "interface"});
+    const label excessRule = excessRules.find(excessMassTo);
+    if (excessRule < 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "excessMassTo " << excessMassTo << " is not allowed: choose"
+            << " allInterface (the default: every interface neighbour, old"
+            << " and new, Koerner et al. 2005) or interface (the nodes that"
+            << " were interface nodes before the conversions: a jet leaves"
+            << " a sharp edge without creeping under it)"
+            << exit(FatalIOError);
+    }
     if (!(surfaceTension >= 0 && surfaceTension < GREAT))
     {
         FatalIOErrorInFunction(dict_)
@@ -185,14 +200,15 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
     }
     fluid_.enableFreeSurface
     (
-        gasPressure, fillMargin, surfaceTension, alpha_
+        gasPressure, fillMargin, surfaceTension, alpha_, excessRule
     );
     updateFields();
 
     const labelVector n = fluid_.freeSurface()->counts();
     Info<< "Free surface (Koerner et al. 2005): gas pressure " << gasPressure
         << " Pa, fill margin " << fillMargin << ", surface tension "
-        << surfaceTension << " N/m, " << n.x() << " interface nodes" << nl
+        << surfaceTension << " N/m, excess mass to " << excessMassTo
+        << ", " << n.x() << " interface nodes" << nl
         << endl;
 }
 
