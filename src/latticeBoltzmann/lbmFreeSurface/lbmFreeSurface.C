@@ -22,6 +22,13 @@ namespace Foam
     defineTypeNameAndDebug(lbmFreeSurface, 0);
 }
 
+const Foam::Enum<Foam::lbmFreeSurface::excessMassRule>
+Foam::lbmFreeSurface::excessMassRuleNames
+({
+    { excessMassRule::EXCESS_TO_ALL_INTERFACE, "allInterface" },
+    { excessMassRule::EXCESS_TO_INTERFACE, "interface" },
+});
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 

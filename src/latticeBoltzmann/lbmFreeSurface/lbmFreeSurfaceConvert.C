@@ -236,13 +236,14 @@ void Foam::lbmFreeSurface::convert(scalar* f, const vector& g)
     //    et al.'s rule stays the default. (Sharing with the new nodes
     //    downstream of the giver only, c.u > 0, tried too: the dam break
     //    as the default, the slot's film gone, but its discharge
-    //    coefficient 0.82 and 0.90.) Where no interface node can take it (a gas pocket
-    //    closed by the surge in a corner fills at once with m ~ 0 and
-    //    rho ~ 1: a deficit of a whole node), it is spread over all the
-    //    liquid as a uniform change of density, at rest (the limit of the
-    //    sound wave that would carry it): handed to the liquid neighbours
-    //    it drove them to density ~0.7 and unstable at water's viscosity
-    //    (tau - 1/2 ~ 1e-4), kept in the node's own populations to ~0.
+    //    coefficient 0.82 and 0.90.) Where no interface node can take it
+    //    (a gas pocket closed by the surge in a corner fills at once with
+    //    m ~ 0 and rho ~ 1: a deficit of a whole node), it is spread over
+    //    all the liquid as a uniform change of density, at rest (the
+    //    limit of the sound wave that would carry it): handed to the
+    //    liquid neighbours it drove them to density ~0.7 and unstable at
+    //    water's viscosity (tau - 1/2 ~ 1e-4), kept in the node's own
+    //    populations to ~0.
     //    Liquid neighbours take no share otherwise: shares to liquid at
     //    every conversion drove the thin film and the surge tip unstable.
     const label receivers =

@@ -13,6 +13,7 @@ License
 
 #include "freeSurfaceEffect.H"
 #include "optionalEntry.H"
+#include "selectEntry.H"
 #include "physicsScene.H"
 #include "fluidEffect.H"
 #include "porousFlowEffect.H"
@@ -146,21 +147,15 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
     const scalar fillMargin = optionalEntry<scalar>(dict_, "fillMargin", 1e-3);
     const scalar surfaceTension =
         optionalEntry<scalar>(dict_, "surfaceTension", 0);
-    // The conversions' excess mass (lbmFreeSurface::excessMassRule)
-    const word excessMassTo =
-        optionalEntry<word>(dict_, "excessMassTo", "allInterface");
-    const wordList excessRules({"allInterface", "interface"});
-    const label excessRule = excessRules.find(excessMassTo);
-    if (excessRule < 0)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "excessMassTo " << excessMassTo << " is not allowed: choose"
-            << " allInterface (the default: every interface neighbour, old"
-            << " and new, Koerner et al. 2005) or interface (the nodes that"
-            << " were interface nodes before the conversions: a jet leaves"
-            << " a sharp edge without creeping under it)"
-            << exit(FatalIOError);
-    }
+    // Where the conversions' excess mass goes: every interface neighbour
+    // (allInterface, Koerner et al. 2005) or the old ones only (interface:
+    // a jet leaves a sharp edge without creeping under it), see
+    // lbmFreeSurface::convert
+    const lbmFreeSurface::excessMassRule excessRule = selectEntry
+    (
+        lbmFreeSurface::excessMassRuleNames, "excessMassTo", dict_, true,
+        lbmFreeSurface::EXCESS_TO_ALL_INTERFACE
+    );
     if (!(surfaceTension >= 0 && surfaceTension < GREAT))
     {
         FatalIOErrorInFunction(dict_)
@@ -207,7 +202,8 @@ Foam::physicsEffects::freeSurface::freeSurface(physicsScene& scene)
     const labelVector n = fluid_.freeSurface()->counts();
     Info<< "Free surface (Koerner et al. 2005): gas pressure " << gasPressure
         << " Pa, fill margin " << fillMargin << ", surface tension "
-        << surfaceTension << " N/m, excess mass to " << excessMassTo
+        << surfaceTension << " N/m, excess mass to "
+        << lbmFreeSurface::excessMassRuleNames[excessRule]
         << ", " << n.x() << " interface nodes" << nl
         << endl;
 }
