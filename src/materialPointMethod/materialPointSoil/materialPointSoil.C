@@ -467,9 +467,11 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     {
         // Known issue (a new user's probe, 2026-12-07): a friction wall's
         // ghost nodes copy the node inside, and the points' affine
-        // velocity extrapolated beyond the wall folds into it unmirrored
-        // (the suspect, not yet fixed); PIC, FLIP and cubic B-splines
-        // gave Coulomb's answer to 0.1%
+        // velocity extrapolated beyond the wall folds into it unmirrored,
+        // but evaluated at that node instead (tried 2026-12-07) it took
+        // the slide only from 0.259 to 0.229 m: a part of the cause, the
+        // rest not yet found; PIC, FLIP and cubic B-splines gave
+        // Coulomb's answer to 0.1%
         WarningInFunction
             << "transfer APIC with a friction wall and shape function "
             << shape_->type() << " is a known issue: soil resting on the"

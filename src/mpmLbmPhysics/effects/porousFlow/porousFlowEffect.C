@@ -157,7 +157,7 @@ Foam::physicsEffects::porousFlow::porousFlow(physicsScene& scene)
         soil_ = &scene.effect<physicsEffects::soil>("soil");
         fluid_.enablePorosity();
         Info<< ": porosity 1 - phi of the soil, resistance of the drag";
-        const scalarList nMin(minPorosities(soil_->mpm()));
+        const scalarList nMin(porosityBounds(soil_->mpm()));
         checkPorous(soil_->mpm(), nMin);
         const bool displacement =
             optionalEntry<Switch>(dict_, "displacement", false);
@@ -249,15 +249,7 @@ void Foam::physicsEffects::porousFlow::reportBrinkmanLayer
     const scalar nu = fluid_.units().nu();
     const scalar dx = fluid_.lattice().dx();
     const materialPointSoil& mpm = soil_->mpm();
-    const materialPoints& points = mpm.points();
-    scalarList nMax(mpm.materials().size(), -GREAT);
-    forAll(points.porosity, p)
-    {
-        const label m = points.material[p];
-        nMax[m] = max(nMax[m], points.porosity[p]);
-    }
-    Pstream::listCombineGather(nMax, maxEqOp<scalar>());
-    Pstream::listCombineScatter(nMax);
+    const scalarList nMax(porosityBounds(mpm, true));
 
     Info<< "Porous flow: the Brinkman layer at no-slip walls and the soil's"
         << " faces, sqrt(nu K/(n nu_w)) at each material's loosest:";
@@ -311,21 +303,28 @@ void Foam::physicsEffects::porousFlow::reportBrinkmanLayer
 }
 
 
-Foam::scalarList Foam::physicsEffects::porousFlow::minPorosities
+Foam::scalarList Foam::physicsEffects::porousFlow::porosityBounds
 (
-    const materialPointSoil& mpm
+    const materialPointSoil& mpm,
+    const bool loosest
 )
 {
+    // (the largest as the least of -n)
+    const scalar sign = loosest ? -1 : 1;
     const materialPoints& points = mpm.points();
-    scalarList nMin(mpm.materials().size(), GREAT);
+    scalarList bound(mpm.materials().size(), GREAT);
     forAll(points.porosity, p)
     {
         const label m = points.material[p];
-        nMin[m] = min(nMin[m], points.porosity[p]);
+        bound[m] = min(bound[m], sign*points.porosity[p]);
     }
-    Pstream::listCombineGather(nMin, minEqOp<scalar>());
-    Pstream::listCombineScatter(nMin);
-    return nMin;
+    Pstream::listCombineGather(bound, minEqOp<scalar>());
+    Pstream::listCombineScatter(bound);
+    for (scalar& b : bound)
+    {
+        b *= sign;
+    }
+    return bound;
 }
 
 
