@@ -459,28 +459,51 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
             shape_->type()
         )
     );
-    if
-    (
-        transfer_ == transferType::APIC && walls_->hasFriction()
-     && shape_->type() != "cubicBSpline"
-    )
+    // Known issue (a new user's probe, 2026-12-07, diagnosed the same day):
+    // an elastic block sliding on a Coulomb friction wall starts to rock
+    // and bounce from about 0.1 s (its lift and rocking growing with an
+    // e-folding time of about 20-30 ms, to 1-3 cm/s), and near its sticking
+    // angle it then creeps further than a rigid block's Coulomb law gives
+    // (16.9 degrees, mu 0.3, nu 0.2, gravity ramped over 0.5 s: 0.26-0.33 m
+    // in 3 s against 0.136 m at 4 and 8 cells across its height, with APIC,
+    // FLIP and every shape function; PIC's damping held it at the coarser
+    // grid, not at 16 cells). It needs friction (coefficient 0 slides as
+    // g sin(theta) to 0.02%), grows with Poisson's ratio (nu 0 and 0.1:
+    // Coulomb's slide to 0.5% at 4 and 8 cells; 0.3, 0.45 unstable) and
+    // with the grid's fineness, and away from sticking the slide is
+    // Coulomb's (mu 0.2, 0.25: 0.05%) though the block still rocks: the
+    // signature of the frictional slip-wave instability of elastic bodies
+    // under a constant Coulomb coefficient (Adams 1995, J. Appl. Mech. 62,
+    // 867; Adams 1998, J. Appl. Mech. 65, 470: an apparent friction below
+    // the interface's; Brener et al. 2016, JMPS 89, 149), which the
+    // contact's placement half a cell inside the face may add to: not yet
+    // separated. Transfer, update scheme (USL, USF, MUSL) and the affine
+    // velocity's form (C = B D^-1 instead of the velocity gradient) were
+    // ruled out as causes.
+    if (walls_->maxFrictionCoefficient() > 0)
     {
-        // Known issue (a new user's probe, 2026-12-07): a friction wall's
-        // ghost nodes copy the node inside, and the points' affine
-        // velocity extrapolated beyond the wall folds into it unmirrored,
-        // but evaluated at that node instead (tried 2026-12-07) it took
-        // the slide only from 0.259 to 0.229 m: a part of the cause, the
-        // rest not yet found; PIC, FLIP and cubic B-splines gave
-        // Coulomb's answer to 0.1%
-        WarningInFunction
-            << "transfer APIC with a friction wall and shape function "
-            << shape_->type() << " is a known issue: soil resting on the"
-            << " wall rises off it (1.3 to 3.3 mm/s) and a block near its"
-            << " sticking angle slides about twice as far as Coulomb's law"
-            << " gives (0.26 m against 0.136 m in 3 s at 16.9 degrees, mu"
-            << " 0.3)." << nl
-            << "    Beside friction walls use transfer FLIP (or PIC), or"
-            << " shapeFunction cubicBSpline" << endl;
+        wordList elastic;
+        forAll(materials_, i)
+        {
+            if (materials_[i].type() == "linearElastic")
+            {
+                elastic.append(materialNames_[i]);
+            }
+        }
+        if (elastic.size())
+        {
+            WarningInFunction
+                << "the elastic material(s) " << elastic
+                << " on a friction wall: an elastic body sliding under a"
+                << " constant Coulomb coefficient can rock and bounce"
+                << " (frictional slip waves, Adams 1995), and near its"
+                << " sticking angle then creeps further than Coulomb's law"
+                << " gives, more on finer grids (16.9 degrees, mu 0.3, nu"
+                << " 0.2: 0.26-0.33 m in 3 s against 0.136 m; nu 0 and 0.1"
+                << " held Coulomb's slide to 0.5%)." << nl
+                << "    A known issue: see the README's soilProperties row"
+                << endl;
+        }
     }
 
     // Grid

@@ -590,6 +590,20 @@ void Foam::soilWalls::mirror(List<vector>& vel, const nodeBox& box) const
 }
 
 
+Foam::scalar Foam::soilWalls::maxFrictionCoefficient() const
+{
+    scalar mu = 0;
+    forAll(patchWall_, patchi)
+    {
+        if (patchWall_[patchi] == wallType::friction)
+        {
+            mu = max(mu, patchFriction_[patchi]);
+        }
+    }
+    return mu;
+}
+
+
 void Foam::soilWalls::applyContact
 (
     List<vector>& vel,
