@@ -475,11 +475,12 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     // signature of the frictional slip-wave instability of elastic bodies
     // under a constant Coulomb coefficient (Adams 1995, J. Appl. Mech. 62,
     // 867; Adams 1998, J. Appl. Mech. 65, 470: an apparent friction below
-    // the interface's; Brener et al. 2016, JMPS 89, 149), which the
-    // contact's placement half a cell inside the face may add to: not yet
-    // separated. Transfer, update scheme (USL, USF, MUSL) and the affine
-    // velocity's form (C = B D^-1 instead of the velocity gradient) were
-    // ruled out as causes.
+    // the interface's; Brener et al. 2016, JMPS 89, 149). Ruled out as
+    // causes: the transfer, the update scheme (USL, USF, MUSL), the affine
+    // velocity's form (C = B D^-1 instead of the velocity gradient) and the
+    // contact's place half a cell inside the face (the contact at the face,
+    // commit 595fc3e, crept as well: APIC 0.276 and 0.302 m, FLIP 0.135 and
+    // 0.182 m at 4 and 8 cells).
     if (walls_->maxFrictionCoefficient() > 0)
     {
         wordList elastic;
