@@ -84,7 +84,7 @@ COLLISION = ['BGK', 'TRT', 'MRT', 'regularized']
 SHAPES = ['linear', 'GIMP', 'quadraticBSpline', 'cubicBSpline']
 TRANSFERS = ['PIC', 'FLIP', 'APIC']
 
-# Sizes. Full: about 15-20 minutes on one core of the project's machine
+# Sizes. Full: about 30-35 minutes on one core of the project's machine
 # (see the report of the lead's run); quick: about 2-3 minutes.
 SIZES = {
     'full': {
