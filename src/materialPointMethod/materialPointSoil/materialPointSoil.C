@@ -462,9 +462,9 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
     // Known issue (a new user's probe, 2026-12-07, diagnosed the same day):
     // an elastic block sliding on a Coulomb friction wall starts to rock
     // and bounce from about 0.1 s (its lift and rocking growing with an
-    // e-folding time of about 20-30 ms, to 1-3 cm/s), and near its sticking
+    // e-folding time of about 30-50 ms, to 1-3 cm/s), and near its sticking
     // angle it then creeps further than a rigid block's Coulomb law gives
-    // (16.9 degrees, mu 0.3, nu 0.2, gravity ramped over 0.5 s: 0.26-0.33 m
+    // (16.9 degrees, mu 0.3, nu 0.2, gravity ramped over 0.5 s: 0.26-0.36 m
     // in 3 s against 0.136 m at 4 and 8 cells across its height, with APIC,
     // FLIP and every shape function; PIC's damping held it at the coarser
     // grid, not at 16 cells). It needs friction (coefficient 0 slides as
@@ -500,7 +500,7 @@ Foam::materialPointSoil::materialPointSoil(const latticeMesh& lattice)
                 << " (frictional slip waves, Adams 1995), and near its"
                 << " sticking angle then creeps further than Coulomb's law"
                 << " gives, more on finer grids (16.9 degrees, mu 0.3, nu"
-                << " 0.2: 0.26-0.33 m in 3 s against 0.136 m; nu 0 and 0.1"
+                << " 0.2: 0.26-0.36 m in 3 s against 0.136 m; nu 0 and 0.1"
                 << " held Coulomb's slide to 0.5%)." << nl
                 << "    A known issue: see the README's soilProperties row"
                 << endl;
