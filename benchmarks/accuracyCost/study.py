@@ -29,6 +29,9 @@
 #                slot         excessMassTo x cells across a slot, a jet
 #                             leaving sharp edges (discharge coefficient
 #                             against Kirchhoff's pi/(pi + 2))
+#                shedding     wall (interpolated, staircase) x D/dx, the
+#                             vortex street behind a cylinder (Schaefer &
+#                             Turek 2D-2: C_D,max, C_L,max, Strouhal number)
 #       soil     column       shape function x points per cell x H/dx, elastic
 #                             column under self-weight (analytic stress and
 #                             settlement)
@@ -106,6 +109,7 @@ SIZES = {
         'erosion': {'nR': [4, 6, 8, 12]},
         'damBreak': {'n': [10, 20, 40, 80]},
         'slot': {'n': [4, 8, 16, 32], 'endTime': 0.5},
+        'shedding': {'n': [20, 40, 80]},
         'seepage': {'dx': [0.025, 0.02, 0.0125, 0.01]},
     },
     'quick': {
@@ -121,12 +125,13 @@ SIZES = {
         'erosion': {'nR': [4, 6]},
         'damBreak': {'n': [10, 20]},
         'slot': {'n': [4, 8], 'endTime': 0.3},
+        'shedding': {'n': [20]},
         'seepage': {'dx': [0.025]},
     },
 }
 
 GROUPS = {
-    'water': ['taylorGreen', 'cavity', 'damBreak', 'slot'],
+    'water': ['taylorGreen', 'cavity', 'damBreak', 'slot', 'shedding'],
     'soil': ['column', 'bar', 'transfer'],
     'coupled': ['darcy', 'collapse', 'coupling', 'erosion', 'seepage'],
 }
@@ -201,7 +206,8 @@ def run_app(case, app, *args):
         try:
             return _run_app(case, app, *args)
         except RunFailed as e:
-            log = open(os.path.join(case, 'log.' + app), errors='replace').read()
+            log = open(os.path.join(case, 'log.' + os.path.basename(app)),
+                       errors='replace').read()
             if attempt == 3 or not ('exit status 127' in str(e)
                                     or 'error while loading shared' in log):
                 raise
@@ -210,7 +216,7 @@ def run_app(case, app, *args):
 
 
 def _run_app(case, app, *args):
-    log = os.path.join(case, 'log.' + app)
+    log = os.path.join(case, 'log.' + os.path.basename(app))
     with open(log, 'w') as f:
         env = dict(os.environ, PWD=os.path.abspath(case))
         p = subprocess.Popen([app] + list(args), cwd=case, stdout=f,
@@ -754,6 +760,46 @@ def slot_run(spec, case, s):
     return out
 
 
+# Schaefer & Turek 1996, 2D-2: the middles of their table 4's intervals
+# (C_D,max 3.22-3.24, C_L,max 0.99-1.01, St 0.295-0.305)
+SHEDDING_REF = {'Cdmax': 3.23, 'Clmax': 1.0, 'St': 0.3}
+
+
+def shedding_runs(s):
+    return [{'curve': '%s wall' % wall, 'wall': wall, 'n': n,
+             'res': 'D/dx = %d' % n, 'dx': 0.1 / n}
+            for wall in ('interpolated', 'staircase') for n in s['n']]
+
+
+def shedding_run(spec, case, s):
+    """The tutorial fluid/cylinder2D's benchmark 2D-2 by its own Allrun
+    (-Re 100 [-staircase], dx/deltaT 40 m/s, 8 s; cylinder.py reads the
+    last 2 s): errors of C_D,max, C_L,max and St against the middles of
+    Schaefer & Turek's intervals (their half-widths 0.3%, 1%, 1.7%)"""
+    src = os.path.join(TUTORIALS, 'fluid', 'cylinder2D')
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(src, case, ignore=shutil.ignore_patterns(
+        '*.png', 'Re100', 'staircase', 'log.*', 'postProcessing', '[1-9]*'))
+    args = ['-Re', '100', '-n', str(spec['n'])]
+    if spec['wall'] == 'staircase':
+        args.append('-staircase')
+    run_app(case, './Allrun', *args)
+    run = os.path.join(case, 'Re100')
+    if spec['wall'] == 'staircase':
+        run = os.path.join(run, 'staircase')
+    out = run_cost(run)
+    text = open(os.path.join(case, 'log.Allrun'), errors='replace').read()
+    m = re.search(r'cylinder2D-2: St (\S+) Cdmax (\S+) Clmax (\S+) dp (\S+)', text)
+    if not m:
+        raise RunFailed('cylinder.py printed no 2D-2 line')
+    St, Cdmax, Clmax, dp = (float(v) for v in m.groups())
+    out.update(error=abs(Cdmax / SHEDDING_REF['Cdmax'] - 1),
+               clError=abs(Clmax / SHEDDING_REF['Clmax'] - 1),
+               stError=abs(St / SHEDDING_REF['St'] - 1),
+               St=St, Cdmax=Cdmax, Clmax=Clmax, dp=dp)
+    return out
+
+
 SEEPAGE_L, SEEPAGE_X0 = 0.5, 0.1
 
 
@@ -1088,6 +1134,24 @@ STUDIES = {
         question='Water leaving sharp edges (slot, weir): excessMassTo and '
                  'resolution',
         extra=['Cd']),
+    'shedding': dict(
+        runs=shedding_runs, run=shedding_run, group='water',
+        title='Vortex street behind a cylinder: wall x resolution',
+        about='The tutorial fluid/cylinder2D with -Re 100 (Schaefer & Turek '
+              '1996, benchmark 2D-2: the cylinder D = 0.1 m in the 2.2 x '
+              '0.41 m channel, mean inflow 1 m/s, nu 1e-3; TRT, dx/deltaT '
+              '40 m/s, 8 s, the last 2 s read), D/dx cells over the '
+              'diameter; the cylinder an obstacle with interpolated '
+              'bounce-back (Bouzidi) or cells cut out of the mesh '
+              '(staircase). error: |C_D,max/3.23 - 1|, clError: '
+              '|C_L,max - 1|, stError: |St/0.3 - 1|, against the middles '
+              'of the benchmark\'s intervals (3.22-3.24, 0.99-1.01, '
+              '0.295-0.305: below their half-widths 0.3%, 1%, 1.7% an error '
+              'is inside them).',
+        metrics=[('error', '|C_D,max / 3.23 - 1|', [1e-2, 3e-3], 'sheddingDrag'),
+                 ('clError', '|C_L,max - 1|', [3e-2, 1e-2], 'sheddingLift')],
+        question='Water around bodies (vortex shedding): wall and resolution',
+        extra=['St', 'Cdmax', 'Clmax', 'dp', 'stError']),
     'seepage': dict(
         runs=seepage_runs, run=seepage_run, group='coupled',
         title='Seepage through a dam: fixed medium or material points x '

@@ -398,7 +398,6 @@ bool sampleOnWriteOnly(const Foam::word& type, const Foam::dictionary& dict)
 } // End anonymous namespace
 
 
-
 bool Foam::physicsScene::functionObjectsReadFields() const
 {
     const functionObjectList& objects = runTime_.functionObjects();
