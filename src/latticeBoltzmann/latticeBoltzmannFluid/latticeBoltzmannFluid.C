@@ -533,22 +533,6 @@ void Foam::latticeBoltzmannFluid::enableGivenDrag()
 }
 
 
-Foam::vector Foam::latticeBoltzmannFluid::nodeForce(const label n) const
-{
-    const vector g = latticeAcceleration();
-    // (the water's weight, rho_0 g: lbmKernel.H)
-    if (Fx_.empty())
-    {
-        return g;
-    }
-    const scalar eps = porosity_.size() ? porosity_[n] : 1.0;
-    return
-        eps*g
-      + vector(Fx_[n], Fy_[n], Fz_[n])
-      + vector(dragX_[n], dragY_[n], dragZ_[n]);
-}
-
-
 void Foam::latticeBoltzmannFluid::prepareStream()
 {
     if (prepared_)

@@ -264,7 +264,7 @@ void Foam::latticeBoltzmannFluid::updateFields()
     // about five, and probes written every ten steps took 40% of a run.
     // Here the moments are summed direction by direction over blocks of
     // cells held in the first-level cache (independent sums the compiler
-    // vectorises), and each block finished with one division per cell.
+    // vectorises), and each block finished with two divisions per cell.
     const label Q = velocitySet_->Q();
     const List<labelVector>& c = velocitySet_->c();
     const labelList& cellNode = lattice_.cellNode();
@@ -276,22 +276,16 @@ void Foam::latticeBoltzmannFluid::updateFields()
     scalarField& p = p_.primitiveFieldRef();
     scalarField& rhoPhys = rho_.primitiveFieldRef();
 
-    // Post-collision momentum is rho u + F/2, F the node's force as
-    // nodeForce has it. In a porous medium u is the superficial velocity
-    // (the Darcy flux) and p the pore pressure c_s^2 (rho - 1)/eps
-    // (relative to the reference, units_.pressure), with displacement the
-    // coming step's time-centred one (pressureDensity)
+    // Post-collision momentum is rho u + F/2. In a porous medium u is the
+    // superficial velocity (the Darcy flux) and p the pore pressure
+    // c_s^2 (rho - 1)/eps relative to the reference (units_.pressure, its
+    // factor hoisted), with displacement the coming step's time-centred
+    // one (pressureDensity)
     const scalar uScale = units_.velocityScale();
     const scalar rho0 = units_.rho0();
     const scalar pScale = rho0*sqr(uScale)/3.0;
-    const vector g = latticeAcceleration();
-    const bool forced = Fx_.size();
     const scalar* __restrict__ eps =
         porosity_.size() ? porosity_.cdata() : nullptr;
-    const scalar* __restrict__ source =
-        displacementSource_.size() ? displacementSource_.cdata() : nullptr;
-    const scalar* __restrict__ hydrostatic =
-        hydrostatic_.size() ? hydrostatic_.cdata() : nullptr;
     const lbmObstacles& bodies = obstacles_();
     const lbmFreeSurface* surface = freeSurface_.get();
     const scalar pGas = surface ? units_.pressure(surface->rhoGas()) : 0;
@@ -346,21 +340,12 @@ void Foam::latticeBoltzmannFluid::updateFields()
             }
             const scalar rho = rhoB[i];
             const scalar epsN = eps ? eps[n] : 1.0;
-            const vector F =
-                forced
-              ? vector
-                (
-                    epsN*g
-                  + vector(Fx_[n], Fy_[n], Fz_[n])
-                  + vector(dragX_[n], dragY_[n], dragZ_[n])
-                )
-              : g;
             U[celli] =
-                (vector(jxB[i], jyB[i], jzB[i]) - 0.5*F)*(uScale/rho);
-            const scalar rhoP = source ? rho + 0.5*source[n] : rho;
+                (vector(jxB[i], jyB[i], jzB[i]) - 0.5*nodeForce(n))
+               *(uScale/rho);
             p[celli] =
-                (rhoP - 1.0)*pScale/epsN
-              + (hydrostatic ? hydrostatic[n] : 0);
+                (pressureDensity(n, rho) - 1.0)*pScale/epsN
+              + hydrostaticPressure(n);
             rhoPhys[celli] = (rho - (1 - epsN))*rho0;
         }
     }
